@@ -1,0 +1,108 @@
+"""LaFAN1 training data: read the BVH files once, pack them, and cut training/validation windows.
+
+`prepare` writes one compact `.npz` (root positions and continuity-fixed local quaternions of every
+training file, plus the skeleton) so that a training run — here or on a remote accelerator that gets only
+the working tree — never parses BVH again.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import List, Optional, Tuple
+
+import numpy as np
+
+from .bvh import lafan1_files, read_bvh, subject_of
+from .skeleton import Skeleton, with_offsets
+
+TRAIN_SUBJECTS = (1, 2, 3, 4)
+TEST_SUBJECTS = (5,)
+
+
+@dataclass
+class MotionPack:
+    skeleton: Skeleton
+    files: List[str]
+    starts: np.ndarray          # (F+1,) frame offsets of each file in the flat arrays
+    root_positions: np.ndarray  # (frames, 3) float32, data units (cm)
+    local_quaternions: np.ndarray  # (frames, J, 4) float32
+    frame_time: float
+
+    def file_frames(self, i: int) -> Tuple[int, int]:
+        return int(self.starts[i]), int(self.starts[i + 1])
+
+
+def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN_SUBJECTS,
+            progress: bool = True) -> MotionPack:
+    files = lafan1_files(data_dir, tuple(subjects))
+    roots, quats, names = [], [], []
+    skeleton = None
+    frame_time = 1.0 / 30
+    iterator = files
+    if progress:
+        from tqdm import tqdm
+        iterator = tqdm(files, desc="reading BVH", unit="file")
+    for f in iterator:
+        m = read_bvh(f)
+        if skeleton is None:
+            skeleton, frame_time = m.skeleton, m.frame_time
+        elif m.skeleton.names != skeleton.names or m.skeleton.parents != skeleton.parents:
+            raise ValueError(f"{f}: skeleton differs from {files[0]}")
+        roots.append(m.root_positions.astype(np.float32))
+        quats.append(m.local_quaternions.astype(np.float32))
+        names.append(f.name)
+    assert skeleton is not None
+    if stats:
+        # The official benchmark computes positions with the training offsets of its statistics file.
+        s = json.loads(Path(stats).read_text())
+        offsets = np.zeros((skeleton.joint_count, 3))
+        offsets[1:] = np.asarray(s["offsets"], dtype=np.float64).reshape(-1, 3)
+        skeleton = with_offsets(skeleton, offsets)
+    starts = np.cumsum([0] + [len(r) for r in roots])
+    pack = MotionPack(skeleton, names, starts, np.concatenate(roots), np.concatenate(quats), frame_time)
+    save_pack(pack, out)
+    return pack
+
+
+def save_pack(pack: MotionPack, path: str) -> None:
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    np.savez_compressed(path, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files),
+                        starts=pack.starts, root_positions=pack.root_positions,
+                        local_quaternions=pack.local_quaternions, frame_time=pack.frame_time)
+
+
+def load_pack(path: str) -> MotionPack:
+    if not Path(path).exists():
+        raise FileNotFoundError(f"{path} not found; run `python3 -m deltainterp prepare` first")
+    z = np.load(path, allow_pickle=False)
+    return MotionPack(Skeleton.from_json(json.loads(str(z["skeleton"]))), [str(f) for f in z["files"]],
+                      z["starts"], z["root_positions"], z["local_quaternions"], float(z["frame_time"]))
+
+
+def windows(frame_count: int, length: int, offset: int) -> List[int]:
+    """Window starts as the official benchmark cuts them: 0, offset, … while start + length < frames."""
+    starts, i = [], 0
+    while i + length < frame_count:
+        starts.append(i)
+        i += offset
+    return starts
+
+
+def split_windows(pack: MotionPack, length: int = 50, offset: int = 20, validation_fraction: float = 0.1,
+                  validation_length: int = 65, validation_offset: int = 40) -> Tuple[np.ndarray, np.ndarray]:
+    """Training windows from the first (1 − fraction) of each file, validation windows from its tail.
+
+    Returns absolute start frames into the pack's flat arrays. Choices (presets, steps) are made on the
+    validation windows, never on subject 5."""
+    train, val = [], []
+    for i in range(len(pack.files)):
+        a, b = pack.file_frames(i)
+        cut = a + int(round((b - a) * (1.0 - validation_fraction)))
+        train += [a + s for s in windows(cut - a, length, offset)]
+        val += [cut + s for s in windows(b - cut, validation_length, validation_offset)]
+    return np.asarray(train, dtype=np.int64), np.asarray(val, dtype=np.int64)
+
+
+__all__ = ["MotionPack", "prepare", "load_pack", "save_pack", "windows", "split_windows",
+           "TRAIN_SUBJECTS", "TEST_SUBJECTS", "subject_of"]

@@ -1,0 +1,216 @@
+"""The Δ-Interpolator network (method-spec §2.5–2.8), in a form that exports to plain ONNX operators.
+
+Key tokens (past keys and the target) attend to each other; missing-frame tokens attend to the key
+tokens only, through the SAME blocks (weight sharing). Because keys never attend to missing frames, the
+keys can be encoded once (`encode_keys`) and missing frames decoded later, one at a time if wanted
+(`decode_queries`). The heads start at zero, so an untrained network outputs Δ = 0 (pure SLERP).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+from typing import List, Optional, Tuple
+
+import torch
+from torch import nn
+
+from .contract import FEATURES_PER_JOINT, INPUT_DELTA_MODES, OUTPUT_DELTA_MODES
+
+Tensor = torch.Tensor
+
+
+@dataclass
+class ModelConfig:
+    joints: int = 22
+    width: int = 256
+    blocks: int = 4
+    heads: int = 8
+    embedding_dim: int = 32
+    embedding_size: int = 256
+    dropout: float = 0.2
+    output_delta_mode: str = "slerp"
+    input_delta_mode: str = "last_pose"
+
+    def __post_init__(self) -> None:
+        if self.width % self.heads:
+            raise ValueError(f"width {self.width} must be divisible by heads {self.heads}")
+        if self.output_delta_mode not in OUTPUT_DELTA_MODES:
+            raise ValueError(f"output delta mode must be one of {OUTPUT_DELTA_MODES}")
+        if self.input_delta_mode not in INPUT_DELTA_MODES:
+            raise ValueError(f"input delta mode must be one of {INPUT_DELTA_MODES}")
+
+    def to_dict(self) -> dict:
+        return asdict(self)
+
+
+PRESETS = {
+    # The paper's network (method-spec §2.13): 44.9 M parameters at J = 22.
+    "paper": dict(width=1024, blocks=6, heads=8),
+    # Small enough for a game frame budget; chosen by measured accuracy and speed (model card).
+    "runtime": dict(width=256, blocks=4, heads=8),
+    # For tests and fixtures only.
+    "tiny": dict(width=32, blocks=2, heads=4, dropout=0.0),
+}
+
+
+def preset(name: str, **overrides) -> ModelConfig:
+    if name not in PRESETS:
+        raise ValueError(f"unknown preset {name!r}; choose one of {sorted(PRESETS)}")
+    return ModelConfig(**{**PRESETS[name], **overrides})
+
+
+class LayerNorm(nn.Module):
+    """The reference implementation's LayerNorm: unbiased std, ε added to the std (not the variance).
+    Written with elementary ops so that opset 15 holds no LayerNormalization node."""
+
+    def __init__(self, width: int, eps: float = 1e-6) -> None:
+        super().__init__()
+        self.gain = nn.Parameter(torch.ones(width))
+        self.bias = nn.Parameter(torch.zeros(width))
+        self.eps = eps
+        self.unbias = width / (width - 1)
+
+    def forward(self, x: Tensor) -> Tensor:
+        centred = x - x.mean(-1, keepdim=True)
+        std = torch.sqrt((centred * centred).mean(-1, keepdim=True) * self.unbias)
+        return self.gain * centred / (std + self.eps) + self.bias
+
+
+class ResidualMlp(nn.Module):
+    """Three Linear + LeakyReLU(0.01) layers, dropout after the first, and an inner skip."""
+
+    def __init__(self, width: int, dropout: float) -> None:
+        super().__init__()
+        self.layers = nn.ModuleList([nn.Linear(width, width) for _ in range(3)])
+        self.dropout = nn.Dropout(dropout)
+        self.activation = nn.LeakyReLU(0.01)
+
+    def forward(self, x: Tensor) -> Tensor:
+        h = self.dropout(self.activation(self.layers[0](x)))
+        h = self.activation(self.layers[1](h))
+        h = self.activation(self.layers[2](h))
+        return h + x
+
+
+class MultiHeadAttention(nn.Module):
+    """Plain scaled dot-product attention (scores / √(width/heads)) written with MatMul/Softmax."""
+
+    def __init__(self, width: int, heads: int) -> None:
+        super().__init__()
+        self.heads = heads
+        self.head_width = width // heads
+        self.query = nn.Linear(width, width)
+        self.key = nn.Linear(width, width)
+        self.value = nn.Linear(width, width)
+        self.output = nn.Linear(width, width)
+        self.scale = 1.0 / math.sqrt(self.head_width)
+
+    def split(self, x: Tensor) -> Tensor:  # (B, T, D) → (B, H, T, d)
+        return x.reshape(int(x.shape[0]), -1, self.heads, self.head_width).transpose(1, 2)
+
+    def project_memory(self, keys: Tensor) -> Tuple[Tensor, Tensor]:
+        return self.key(keys), self.value(keys)
+
+    def attend(self, x: Tensor, memory_keys: Tensor, memory_values: Tensor) -> Tensor:
+        q = self.split(self.query(x))
+        k = self.split(memory_keys)
+        v = self.split(memory_values)
+        scores = torch.matmul(q, k.transpose(2, 3)) * self.scale
+        attended = torch.matmul(torch.softmax(scores, dim=-1), v)
+        width = self.heads * self.head_width
+        return self.output(attended.transpose(1, 2).reshape(int(x.shape[0]), -1, width))
+
+
+class Block(nn.Module):
+    def __init__(self, width: int, heads: int, dropout: float) -> None:
+        super().__init__()
+        self.attention = MultiHeadAttention(width, heads)
+        self.norm = LayerNorm(width)
+        self.mlp = ResidualMlp(width, dropout)
+
+    def forward(self, x: Tensor, memory_keys: Tensor, memory_values: Tensor) -> Tensor:
+        x = torch.relu(self.norm(self.attention.attend(x, memory_keys, memory_values) + x))
+        return self.mlp(x)
+
+
+class DeltaInterpolator(nn.Module):
+    def __init__(self, config: ModelConfig) -> None:
+        super().__init__()
+        self.config = config
+        c = config
+        features = FEATURES_PER_JOINT * c.joints
+        # Two learned embeddings (frame index, gap length), each a table followed by a Linear, as the
+        # reference's one-hot → Linear; their projections are summed instead of concatenated
+        # (identical maths, no Concat/Expand of dynamic shapes in the graph).
+        self.frame_embedding = nn.Embedding(c.embedding_size, c.embedding_dim)
+        self.gap_embedding = nn.Embedding(c.embedding_size, c.embedding_dim)
+        self.key_input = nn.Linear(features, c.width)
+        self.key_frame_projection = nn.Linear(c.embedding_dim, c.width, bias=False)
+        self.key_gap_projection = nn.Linear(c.embedding_dim, c.width, bias=False)
+        # Missing tokens carry zero features (input Δ-mode last_pose): only embeddings reach them.
+        self.query_input = nn.Linear(features, c.width) if c.input_delta_mode == "none" else None
+        self.query_frame_projection = nn.Linear(c.embedding_dim, c.width)
+        self.query_gap_projection = nn.Linear(c.embedding_dim, c.width, bias=False)
+        self.blocks = nn.ModuleList([Block(c.width, c.heads, c.dropout) for _ in range(c.blocks)])
+        self.root_head = nn.Linear(c.width, 3)
+        self.rotation_head = nn.Linear(c.width, 6 * c.joints)
+        for head in (self.root_head, self.rotation_head):
+            nn.init.zeros_(head.weight)
+            nn.init.zeros_(head.bias)
+
+    # -- the two halves -------------------------------------------------------------------------
+    def encode_keys(self, key_features: Tensor, key_frame_indices: Tensor, gap_length: Tensor
+                    ) -> Tuple[Tensor, List[Tuple[Tensor, Tensor]]]:
+        """Key tokens (B, K, D) after the last block, and per block the projected (keys, values) that
+        missing tokens attend to."""
+        x = (self.key_input(key_features)
+             + self.key_frame_projection(self.frame_embedding(key_frame_indices))
+             + self.key_gap_projection(self.gap_embedding(gap_length)))
+        memory = []
+        for block in self.blocks:
+            k, v = block.attention.project_memory(x)
+            x = block(x, k, v)
+            memory.append(block.attention.project_memory(x))
+        return x, memory
+
+    def decode_queries(self, memory: List[Tuple[Tensor, Tensor]], query_frame_indices: Tensor,
+                       gap_length: Tensor, query_features: Optional[Tensor] = None) -> Tensor:
+        batch = int(memory[0][0].shape[0])
+        m = (self.query_frame_projection(self.frame_embedding(query_frame_indices))
+             + self.query_gap_projection(self.gap_embedding(gap_length)))
+        if m.dim() == 2:
+            m = m.unsqueeze(0).expand(batch, -1, -1) if batch > 1 else m.unsqueeze(0)
+        if self.query_input is not None:
+            if query_features is None:
+                raise ValueError("input delta mode 'none' needs query_features")
+            m = m + self.query_input(query_features)
+        for block, (k, v) in zip(self.blocks, memory):
+            m = block(m, k, v)
+        return m
+
+    def heads(self, tokens: Tensor) -> Tuple[Tensor, Tensor]:
+        root = self.root_head(tokens)
+        rotation = self.rotation_head(tokens).reshape(int(tokens.shape[0]), -1, self.config.joints, 6)
+        return root, rotation
+
+    def forward(self, key_features: Tensor, key_frame_indices: Tensor, query_frame_indices: Tensor,
+                gap_length: Tensor, query_features: Optional[Tensor] = None, with_keys: bool = False):
+        """Deltas for the query (missing) frames: root (B, N, 3), 6D (B, N, J, 6). With `with_keys`
+        (training, through DistributedDataParallel's forward) also those of the key frames."""
+        if with_keys:
+            return self.forward_with_keys(key_features, key_frame_indices, query_frame_indices, gap_length,
+                                          query_features)
+        _, memory = self.encode_keys(key_features, key_frame_indices, gap_length)
+        return self.heads(self.decode_queries(memory, query_frame_indices, gap_length, query_features))
+
+    def forward_with_keys(self, key_features: Tensor, key_frame_indices: Tensor,
+                          query_frame_indices: Tensor, gap_length: Tensor,
+                          query_features: Optional[Tensor] = None
+                          ) -> Tuple[Tuple[Tensor, Tensor], Tuple[Tensor, Tensor]]:
+        """Training: deltas for the key frames too (for the reconstruction loss)."""
+        keys, memory = self.encode_keys(key_features, key_frame_indices, gap_length)
+        queries = self.decode_queries(memory, query_frame_indices, gap_length, query_features)
+        return self.heads(keys), self.heads(queries)
+
+    def parameter_count(self) -> int:
+        return sum(p.numel() for p in self.parameters())

@@ -1,0 +1,40 @@
+"""PNG plots of a training run's CSV log and validation curves."""
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+
+def plot_training(run_dir: str | Path) -> Path:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    run = Path(run_dir)
+    rows = list(csv.DictReader(open(run / "log.csv")))
+    steps = [int(r["step"]) for r in rows]
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    for key in ("total", "quat", "pos", "key_quat", "key_pos"):
+        if rows and key in rows[0]:
+            axes[0].plot(steps, [float(r[key]) for r in rows], label=key)
+    axes[0].set_yscale("log")
+    axes[0].set_xlabel("step")
+    axes[0].set_title("training loss (L1 terms; total includes the ×10 scales)")
+    axes[0].legend()
+    val_path = run / "validation.jsonl"
+    if val_path.exists():
+        vals = [json.loads(l) for l in open(val_path)]
+        vs = [v["step"] for v in vals]
+        for n, color in zip((5, 15, 30), ("tab:blue", "tab:orange", "tab:green")):
+            axes[1].plot(vs, [v[f"model_l2q_{n}"] for v in vals], color=color, label=f"model L2Q n={n}")
+            if f"slerp_l2q_{n}" in vals[0]:
+                axes[1].axhline(vals[0][f"slerp_l2q_{n}"], color=color, ls="--", lw=1, label=f"SLERP n={n}")
+        axes[1].set_xlabel("step")
+        axes[1].set_title("validation L2Q (held-out tails of training files)")
+        axes[1].legend(fontsize=8)
+    fig.tight_layout()
+    out = run / "curves.png"
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out

@@ -1,0 +1,261 @@
+"""Training loop: Adam, warm-up then step schedule, checkpoints with exact resume, CSV log and plots,
+CPU / GPU / torchrun (DistributedDataParallel, gloo or nccl)."""
+from __future__ import annotations
+
+import csv
+import json
+import math
+import os
+import random
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Dict, List, Optional
+
+import numpy as np
+import torch
+
+from . import quaternions
+from .data import MotionPack, load_pack, split_windows
+from .kinematics import forward_kinematics
+from .model import DeltaInterpolator, ModelConfig, preset
+from .objective import SkeletonTensors, loss, make_batch, predict
+from .sampler import TransitionSampler
+
+
+@dataclass
+class TrainConfig:
+    data: str = "Training/.data/lafan1-train.npz"
+    out: str = "Training/runs/runtime"
+    preset: str = "runtime"
+    model_overrides: Dict = field(default_factory=dict)
+    batch_size: int = 64
+    steps: int = 20000
+    peak_lr: float = 4e-4
+    warmup_steps: int = 500
+    decay_at: float = 0.8       # fraction of steps after which the lr drops ×0.1
+    reconstruction_scale: float = 1.0
+    seed: int = 0
+    unit_scale: float = 0.01
+    mirror: bool = False
+    random_yaw: bool = False
+    checkpoint_every: int = 500
+    validate_every: int = 500
+    max_minutes: float = 0.0    # 0 = no wall-clock limit; otherwise stop (with a checkpoint) after it
+    threads: int = 0            # 0 = leave torch's default
+
+
+def learning_rate(cfg: TrainConfig, step: int) -> float:
+    if step < cfg.warmup_steps:
+        return 1e-6 + (cfg.peak_lr - 1e-6) * step / cfg.warmup_steps
+    return cfg.peak_lr * (0.1 if step >= cfg.decay_at * cfg.steps else 1.0)
+
+
+def skeleton_tensors(pack: MotionPack, unit_scale: float, device) -> SkeletonTensors:
+    return SkeletonTensors(list(pack.skeleton.parents),
+                           torch.tensor(pack.skeleton.offsets * unit_scale, dtype=torch.float32, device=device),
+                           unit_scale)
+
+
+class WindowSource:
+    """Draws transition batches from training windows: one key layout per batch (one gap n), a random
+    start inside each 50-frame window, optional mirror and random-yaw augmentation."""
+
+    def __init__(self, pack: MotionPack, starts: np.ndarray, window: int, sampler: TransitionSampler,
+                 mirror: bool, random_yaw: bool, device) -> None:
+        self.roots = torch.from_numpy(pack.root_positions).to(device)
+        self.quats = torch.from_numpy(pack.local_quaternions).to(device)
+        self.starts, self.window, self.sampler = starts, window, sampler
+        self.mirror, self.random_yaw = mirror, random_yaw
+        self.mirror_map = pack.skeleton.mirror_map()
+        self.device = device
+
+    def draw(self, rng: np.random.Generator, batch_size: int):
+        layout = self.sampler.sample(rng)
+        length = layout.length
+        picks = self.starts[rng.integers(0, len(self.starts), batch_size)]
+        shift = rng.integers(0, self.window - length + 1, batch_size)
+        idx = torch.from_numpy(picks + shift)[:, None] + torch.arange(length)[None]
+        idx = idx.to(self.device)
+        roots, quats = self.roots[idx].double(), self.quats[idx].double()
+        if self.mirror:
+            flip = torch.from_numpy(rng.random(batch_size) < 0.5).to(self.device)
+            m_roots = roots * roots.new_tensor([1.0, 1.0, -1.0])
+            m_quats = quats[:, :, self.mirror_map] * quats.new_tensor([1.0, -1.0, -1.0, 1.0])
+            roots = torch.where(flip[:, None, None], m_roots, roots)
+            quats = torch.where(flip[:, None, None, None], m_quats, quats)
+        if self.random_yaw:
+            angle = torch.from_numpy(rng.uniform(-math.pi, math.pi, batch_size)).to(self.device)
+            yaw = quaternions.axis_angle("y", angle)
+            roots = quaternions.apply(yaw[:, None].expand(-1, length, -1), roots)
+            quats = quats.clone()
+            quats[:, :, 0] = quaternions.multiply(yaw[:, None].expand(-1, length, -1), quats[:, :, 0])
+        return layout, roots.float(), quats.float()
+
+
+def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: np.ndarray,
+                       skeleton: SkeletonTensors, gaps=(5, 15, 30), past: int = 10) -> Dict[str, float]:
+    """L2Q and L2P (positions in cm, divided by the per-coordinate std of the validation GT) at each gap,
+    on the held-out tails of the training files; model and SLERP side by side."""
+    model.eval()
+    sampler = TransitionSampler(past=past)
+    roots = torch.from_numpy(pack.root_positions)
+    quats = torch.from_numpy(pack.local_quaternions)
+    out = {}
+    with torch.no_grad():
+        for n in gaps:
+            layout = sampler.layout(n)
+            idx = torch.from_numpy(val_starts)[:, None] + torch.arange(layout.length)[None]
+            batch = make_batch(roots[idx], quats[idx], layout, skeleton, model.config.output_delta_mode,
+                               model.config.input_delta_mode)
+            q_idx = torch.tensor(layout.query_frames)
+            gq, gp = forward_kinematics(batch.rotations[:, q_idx], batch.positions[:, q_idx], skeleton.offsets,
+                                        skeleton.parents)
+            std = gp.reshape(-1, gp.shape[-2] * 3).std(0).clamp_min(1e-6)
+            root, rot, _, _ = predict(model, batch, with_keys=False)
+            for name, (r, q) in {"model": (root, rot), "slerp": (batch.base_root, batch.base_rotations)}.items():
+                if name == "slerp" and model.config.output_delta_mode != "slerp":
+                    continue
+                pq, pp = forward_kinematics(q, r, skeleton.offsets, skeleton.parents)
+                pq = quaternions.align_hemisphere(pq, gq)
+                l2q = (pq - gq).reshape(*pq.shape[:2], -1).norm(dim=-1).mean().item()
+                l2p = ((pp - gp).reshape(*pp.shape[:2], -1) / std).norm(dim=-1).mean().item()
+                out[f"{name}_l2q_{n}"] = l2q
+                out[f"{name}_l2p_{n}"] = l2p
+    model.train()
+    return out
+
+
+def _distributed() -> bool:
+    return int(os.environ.get("WORLD_SIZE", "1")) > 1
+
+
+def train(cfg: TrainConfig, progress: bool = True) -> Path:
+    rank, world = 0, 1
+    if _distributed():
+        import torch.distributed as dist
+        backend = "nccl" if torch.cuda.is_available() else "gloo"
+        dist.init_process_group(backend)
+        rank, world = dist.get_rank(), dist.get_world_size()
+    device = torch.device(f"cuda:{int(os.environ.get('LOCAL_RANK', 0))}" if torch.cuda.is_available() else "cpu")
+    if cfg.threads:
+        torch.set_num_threads(cfg.threads)
+    out = Path(cfg.out)
+    out.mkdir(parents=True, exist_ok=True)
+    pack = load_pack(cfg.data)
+    train_starts, val_starts = split_windows(pack)
+    skeleton = skeleton_tensors(pack, cfg.unit_scale, device)
+    model_cfg = preset(cfg.preset, joints=pack.skeleton.joint_count, **cfg.model_overrides)
+
+    torch.manual_seed(cfg.seed)  # seed BEFORE building the model: the seed decides the initial weights
+    model = DeltaInterpolator(model_cfg).to(device)
+    optimizer = torch.optim.Adam(model.parameters(), lr=learning_rate(cfg, 0))
+    rng = np.random.default_rng([cfg.seed, rank])
+    step = 0
+    ckpt_path = out / "checkpoint.pt"
+    if ckpt_path.exists():
+        state = torch.load(ckpt_path, map_location=device)
+        model.load_state_dict(state["model"])
+        optimizer.load_state_dict(state["optimizer"])
+        step = state["step"]
+        rng.bit_generator.state = state["rng"][rank]
+        torch.set_rng_state(state["torch_rng"])
+        random.setstate(state["python_rng"])
+        if rank == 0 and progress:
+            print(f"resumed from {ckpt_path} at step {step}")
+    net = model
+    if world > 1:
+        from torch.nn.parallel import DistributedDataParallel
+        net = DistributedDataParallel(model, device_ids=[device.index] if device.type == "cuda" else None)
+    source = WindowSource(pack, train_starts, 50, TransitionSampler(), cfg.mirror, cfg.random_yaw, device)
+
+    log_path = out / "log.csv"
+    fields = ["step", "lr", "total", "quat", "pos", "key_quat", "key_pos", "seconds"]
+    bar = None
+    if rank == 0 and progress:
+        from tqdm import tqdm
+        bar = tqdm(total=cfg.steps, initial=step, desc=f"train {cfg.preset}", unit="step", dynamic_ncols=True)
+    started = time.time()
+    window_losses: List[Dict[str, float]] = []
+    last_val: Dict[str, float] = {}
+
+    def save_checkpoint() -> None:
+        """Everything an exact resume needs. Under DDP every rank calls this (the RNG states are
+        gathered); rank 0 writes atomically."""
+        rngs = [rng.bit_generator.state]
+        if world > 1:
+            import torch.distributed as dist
+            rngs = [None] * world
+            dist.all_gather_object(rngs, rng.bit_generator.state)
+        if rank != 0:
+            return
+        state = {"model": model.state_dict(), "optimizer": optimizer.state_dict(), "step": step,
+                 "rng": rngs, "torch_rng": torch.get_rng_state(), "python_rng": random.getstate(),
+                 "model_config": model_cfg.to_dict(), "train_config": asdict(cfg),
+                 "skeleton": pack.skeleton.to_json(), "unit_scale": cfg.unit_scale, "validation": last_val}
+        tmp = ckpt_path.with_suffix(".tmp")
+        torch.save(state, tmp)
+        os.replace(tmp, ckpt_path)
+
+    def time_is_up() -> bool:
+        up = cfg.max_minutes > 0 and (time.time() - started) > cfg.max_minutes * 60
+        if world > 1:  # every rank must stop at the same step
+            import torch.distributed as dist
+            flag = torch.tensor([1.0 if up else 0.0])
+            dist.broadcast(flag, 0)
+            up = bool(flag.item())
+        return up
+
+    model.train()
+    while step < cfg.steps:
+        lr = learning_rate(cfg, step)
+        for g in optimizer.param_groups:
+            g["lr"] = lr
+        layout, roots, quats = source.draw(rng, cfg.batch_size)
+        batch = make_batch(roots, quats, layout, skeleton, model_cfg.output_delta_mode, model_cfg.input_delta_mode)
+        terms = loss(net, batch, skeleton, cfg.reconstruction_scale)
+        optimizer.zero_grad(set_to_none=True)
+        terms["total"].backward()
+        optimizer.step()
+        step += 1
+        window_losses.append({k: float(v) for k, v in terms.items()})
+        if rank == 0 and bar is not None:
+            bar.update(1)
+            bar.set_postfix(loss=f"{window_losses[-1]['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
+        if rank == 0 and (step % 50 == 0 or step == cfg.steps):
+            row = {k: float(np.mean([w.get(k, 0.0) for w in window_losses])) for k in fields[2:7]}
+            row.update(step=step, lr=lr, seconds=round(time.time() - started, 1))
+            new = not log_path.exists()
+            with open(log_path, "a", newline="") as f:
+                w = csv.DictWriter(f, fieldnames=fields + sorted(last_val))
+                if new:
+                    w.writeheader()
+                w.writerow({**row, **last_val} if not new else row)
+            window_losses.clear()
+        if rank == 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
+            last_val = validation_metrics(model, pack, val_starts, skeleton)
+            with open(out / "validation.jsonl", "a") as f:
+                f.write(json.dumps({"step": step, **last_val}) + "\n")
+            if bar is not None:
+                bar.write(f"step {step}: " + "  ".join(
+                    f"n={n} L2Q {last_val[f'model_l2q_{n}']:.3f} (slerp {last_val.get(f'slerp_l2q_{n}', float('nan')):.3f})"
+                    for n in (5, 15, 30)))
+        out_of_time = time_is_up()
+        if step % cfg.checkpoint_every == 0 or step == cfg.steps or out_of_time:
+            save_checkpoint()
+        if out_of_time:
+            if rank == 0:
+                print(f"stopping at step {step}: --max-minutes {cfg.max_minutes} reached (resume to continue)")
+            break
+    if bar is not None:
+        bar.close()
+    if rank == 0:
+        try:
+            from .plots import plot_training
+            plot_training(out)
+        except Exception as e:  # plots are a convenience; never lose a run over them
+            print(f"(plots skipped: {e})")
+    if world > 1:
+        import torch.distributed as dist
+        dist.destroy_process_group()
+    return ckpt_path
