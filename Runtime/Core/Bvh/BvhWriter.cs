@@ -1,0 +1,150 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.Text;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Bvh
+{
+    /// <summary>
+    /// Writes BVH files in the layout of a <see cref="BvhAnimation"/>: each joint's channels in their own
+    /// order, End Sites, tab indentation. Rotations are converted back to Euler angles in each joint's
+    /// channel order (middle angle in [−90°, 90°]), so read → write → read gives the same rotations and
+    /// positions (to the 6 decimals written), though not necessarily the same angle triples.
+    /// </summary>
+    public static class BvhWriter
+    {
+        private const double RadiansToDegrees = 180.0 / Math.PI;
+
+        /// <summary>Writes <paramref name="animation"/> to the file at <paramref name="path"/>.</summary>
+        /// <param name="animation">What to write.</param>
+        /// <param name="path">Destination file; overwritten.</param>
+        /// <param name="newLine">Line ending, "\n" (default) or "\r\n" (as LaFAN1 files have).</param>
+        public static void Write(BvhAnimation animation, string path, string newLine = "\n")
+        {
+            using var stream = new StreamWriter(path, false, new UTF8Encoding(false));
+            Write(animation, stream, newLine);
+        }
+
+        /// <summary>Writes <paramref name="animation"/> as BVH text to <paramref name="writer"/>.</summary>
+        public static void Write(BvhAnimation animation, TextWriter writer, string newLine = "\n")
+        {
+            if (animation == null) throw new ArgumentNullException(nameof(animation));
+            if (writer == null) throw new ArgumentNullException(nameof(writer));
+            if (newLine != "\n" && newLine != "\r\n") throw new ArgumentException("newLine must be \"\\n\" or \"\\r\\n\"", nameof(newLine));
+
+            Skeleton skeleton = animation.Skeleton;
+            RequireDepthFirstOrder(skeleton);
+            var sb = new StringBuilder(4096);
+            sb.Append("HIERARCHY").Append(newLine);
+            WriteJoint(animation, 0, 0, sb, newLine);
+            sb.Append("MOTION").Append(newLine);
+            MotionClip motion = animation.Motion;
+            sb.Append("Frames: ").Append(motion.FrameCount.ToString(CultureInfo.InvariantCulture)).Append(newLine);
+            sb.Append("Frame Time: ").Append(motion.FrameTime.ToString("0.0#######", CultureInfo.InvariantCulture)).Append(newLine);
+            writer.Write(sb.ToString());
+
+            int jointCount = skeleton.JointCount;
+            var orders = new EulerOrder?[jointCount];
+            for (int j = 0; j < jointCount; j++) orders[j] = animation.RotationOrder(j);
+
+            Span<double> euler = stackalloc double[3];
+            for (int f = 0; f < motion.FrameCount; f++)
+            {
+                sb.Clear();
+                bool first = true;
+                for (int j = 0; j < jointCount; j++)
+                {
+                    int p = motion.PositionIndex(f, j);
+                    if (orders[j] is EulerOrder order)
+                    {
+                        Vector3D e = Quaternions.ToEuler(QuaternionD.Read(motion.LocalRotations, motion.RotationIndex(f, j)), order);
+                        euler[0] = e.X * RadiansToDegrees;
+                        euler[1] = e.Y * RadiansToDegrees;
+                        euler[2] = e.Z * RadiansToDegrees;
+                    }
+
+                    int r = 0;
+                    foreach (BvhChannel c in animation.JointChannels[j])
+                    {
+                        double value = c.IsRotation() ? euler[r++] : motion.LocalPositions[p + c.Axis()];
+                        if (!first) sb.Append(' ');
+                        first = false;
+                        AppendNumber(sb, value);
+                    }
+                }
+
+                sb.Append(newLine);
+                writer.Write(sb.ToString());
+            }
+
+            writer.Flush();
+        }
+
+        /// <summary>
+        /// BVH lists joints depth-first; a reader numbers them in that order. A skeleton whose indices are
+        /// another topological order would come back renumbered, so it is refused.
+        /// </summary>
+        private static void RequireDepthFirstOrder(Skeleton skeleton)
+        {
+            // In depth-first preorder the parent of joint j is j−1 or one of j−1's ancestors.
+            for (int j = 1; j < skeleton.JointCount; j++)
+            {
+                int ancestor = j - 1;
+                while (ancestor >= 0 && ancestor != skeleton.Parents[j]) ancestor = skeleton.Parents[ancestor];
+                if (ancestor < 0)
+                {
+                    throw new ArgumentException(
+                        $"joint {j} ('{skeleton.Names[j]}') is not in depth-first order; BVH lists each joint's subtree before its next sibling, so reorder the joints first");
+                }
+            }
+        }
+
+        private static void WriteJoint(BvhAnimation animation, int joint, int depth, StringBuilder sb, string newLine)
+        {
+            Skeleton skeleton = animation.Skeleton;
+            string indent = new string('\t', depth);
+            sb.Append(indent).Append(joint == 0 ? "ROOT " : "JOINT ").Append(skeleton.Names[joint]).Append(newLine);
+            sb.Append(indent).Append('{').Append(newLine);
+            sb.Append(indent).Append("\tOFFSET ");
+            AppendVector(sb, new Vector3D(skeleton.Offsets[3 * joint], skeleton.Offsets[3 * joint + 1], skeleton.Offsets[3 * joint + 2]));
+            sb.Append(newLine);
+            sb.Append(indent).Append("\tCHANNELS ").Append(BvhChannels.Describe(animation.JointChannels[joint])).Append(newLine);
+            for (int child = joint + 1; child < skeleton.JointCount; child++)
+            {
+                if (skeleton.Parents[child] == joint) WriteJoint(animation, child, depth + 1, sb, newLine);
+            }
+
+            foreach (Vector3D site in animation.EndSites[joint])
+            {
+                sb.Append(indent).Append("\tEnd Site").Append(newLine);
+                sb.Append(indent).Append("\t{").Append(newLine);
+                sb.Append(indent).Append("\t\tOFFSET ");
+                AppendVector(sb, site);
+                sb.Append(newLine);
+                sb.Append(indent).Append("\t}").Append(newLine);
+            }
+
+            sb.Append(indent).Append('}').Append(newLine);
+        }
+
+        private static void AppendVector(StringBuilder sb, Vector3D v)
+        {
+            AppendNumber(sb, v.X);
+            sb.Append(' ');
+            AppendNumber(sb, v.Y);
+            sb.Append(' ');
+            AppendNumber(sb, v.Z);
+        }
+
+        private static void AppendNumber(StringBuilder sb, double value)
+        {
+            // Six decimals, like LaFAN1 and most exporters: 1e-6 degrees or data units, far below
+            // anything visible; avoids "-0.000000" so files diff cleanly.
+            string text = value.ToString("F6", CultureInfo.InvariantCulture);
+            if (text == "-0.000000") text = "0.000000";
+            sb.Append(text);
+        }
+    }
+}

@@ -1,0 +1,276 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text;
+using System.Text.Json;
+using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Metrics;
+using Spectre.Console;
+
+namespace DeltaInterpolator.Cli.Verbs
+{
+    /// <summary>
+    /// <c>inbetween benchmark</c>: the official LaFAN1 in-betweening benchmark on a folder of BVH files,
+    /// for the zero-velocity and SLERP baselines (and, later, models), printed as the official tables
+    /// and optionally written as JSON.
+    /// </summary>
+    public sealed class BenchmarkVerb : ICliVerb
+    {
+        private readonly Option<string> _data = new Option<string>("--data")
+        {
+            Description = "Folder with the LaFAN1 BVH files. Test windows come from *_subject5.bvh; without --stats, statistics are computed from *_subject1..4.bvh.",
+            HelpName = "DIR",
+            Required = true,
+        };
+
+        private readonly Option<string?> _stats = new Option<string?>("--stats")
+        {
+            Description = "Statistics JSON (x_mean, x_std, offsets), e.g. ../shared/data/lafan1/train_stats_official.json for the official L2P scale. Default: computed from the training files in --data (windows 50, offset 20).",
+            HelpName = "FILE",
+        };
+
+        private readonly Option<int> _window = new Option<int>("--window")
+        {
+            Description = "Frames per test window.",
+            HelpName = "FRAMES",
+            DefaultValueFactory = _ => 65,
+        };
+
+        private readonly Option<int> _offset = new Option<int>("--offset")
+        {
+            Description = "Frames between test window starts.",
+            HelpName = "FRAMES",
+            DefaultValueFactory = _ => 40,
+        };
+
+        private readonly Option<string> _lengths = new Option<string>("--lengths")
+        {
+            Description = "Transition lengths (missing frames), comma-separated.",
+            HelpName = "N,N,...",
+            DefaultValueFactory = _ => "5,15,30,45",
+        };
+
+        private readonly Option<string?> _json = new Option<string?>("--json")
+        {
+            Description = "Also write the results as JSON to this file: {\"windows\", \"window\", \"offset\", \"stats\", \"results\": {method: {l2q|l2p|npss: {length: value}}}}.",
+            HelpName = "OUT",
+        };
+
+        private readonly Option<string?> _saveStats = new Option<string?>("--save-stats")
+        {
+            Description = "When the statistics are computed from the training files, save them to this JSON file (reusable with --stats).",
+            HelpName = "OUT",
+        };
+
+        /// <inheritdoc />
+        public Command CreateCommand()
+        {
+            var command = new Command(
+                "benchmark",
+                "Run the official LaFAN1 in-betweening benchmark (Harvey et al. 2020) on the zero-velocity and SLERP baselines.\n" +
+                "Test windows of subject 5 are centred and turned to face +X at the last of 10 past frames; for each transition\n" +
+                "length n the n frames after them are filled from frame 9 and the target frame 10+n, then scored:\n" +
+                "  L2Q  mean distance of global quaternions (all joints' components at once)\n" +
+                "  L2P  mean distance of global positions, each coordinate divided by the statistics' std\n" +
+                "  NPSS power-spectrum distance of global quaternions (Gopalakrishnan et al. 2019)\n" +
+                "Lower is better. Example:\n" +
+                "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json");
+            command.Options.Add(_data);
+            command.Options.Add(_stats);
+            command.Options.Add(_window);
+            command.Options.Add(_offset);
+            command.Options.Add(_lengths);
+            command.Options.Add(_json);
+            command.Options.Add(_saveStats);
+            command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
+            return command;
+        }
+
+        private int Run(ParseResult parse)
+        {
+            string data = parse.GetValue(_data)!;
+            string? statsPath = parse.GetValue(_stats);
+            string? jsonPath = parse.GetValue(_json);
+            string? saveStats = parse.GetValue(_saveStats);
+            var options = new BenchmarkOptions
+            {
+                Window = parse.GetValue(_window),
+                Offset = parse.GetValue(_offset),
+                Lengths = ParseLengths(parse.GetValue(_lengths)!),
+            };
+            try
+            {
+                options.Validate();
+            }
+            catch (ArgumentException e)
+            {
+                throw new CliErrors.UsageException("inbetween benchmark: " + e.Message);
+            }
+
+            if (!Directory.Exists(data))
+            {
+                throw new CliErrors.UsageException($"{data}: no such directory; expected the folder of LaFAN1 BVH files (e.g. ../shared/data/lafan1)");
+            }
+
+            IReadOnlyList<string> testFiles = LafanDataset.FindFiles(data, LafanDataset.TestSubjects);
+            if (testFiles.Count == 0)
+            {
+                throw new CliErrors.UsageException($"{data}: no *_subject5.bvh files; expected the LaFAN1 test files (subject 5) in --data");
+            }
+
+            if (statsPath != null && !File.Exists(statsPath))
+            {
+                throw new CliErrors.UsageException($"{statsPath}: no such file; expected a statistics JSON such as train_stats_official.json");
+            }
+
+            var methods = new IInbetweener[] { new ZeroVelocityBaseline(), new SlerpBaseline() };
+            IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings { Out = new AnsiConsoleOutput(Console.Error) });
+            var total = Stopwatch.StartNew();
+            BenchmarkStatistics? statistics = null;
+            BvhAnimation[]? testClips = null;
+            BenchmarkReport? report = null;
+            double readSeconds = 0, statsSeconds = 0, evalSeconds = 0;
+            long testBytes = testFiles.Sum(f => new FileInfo(f).Length);
+            int trainingFileCount = 0;
+
+            progressConsole.Progress()
+                .AutoClear(true)
+                .HideCompleted(false)
+                .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn(), new RemainingTimeColumn())
+                .Start(ctx =>
+                {
+                    var reporter = new SpectreProgress(ctx);
+                    if (statsPath != null)
+                    {
+                        statistics = BenchmarkStatistics.Load(statsPath);
+                    }
+                    else
+                    {
+                        var sw = Stopwatch.StartNew();
+                        IReadOnlyList<string> trainingFiles = LafanDataset.FindFiles(data, LafanDataset.TrainingSubjects);
+                        if (trainingFiles.Count == 0)
+                        {
+                            throw new CliErrors.UsageException($"{data}: no *_subject1..4.bvh training files to compute statistics from; expected them in --data, or pass --stats FILE");
+                        }
+
+                        trainingFileCount = trainingFiles.Count;
+                        BvhAnimation[] training = LafanDataset.ReadAll(trainingFiles, reporter, "Reading training files");
+                        statistics = BenchmarkStatistics.ComputeFromTraining(
+                            training, options, 50, 20,
+                            $"computed from {training.Length} training files in {data} (subjects 1-4, windows 50/20)", reporter);
+                        statsSeconds = sw.Elapsed.TotalSeconds;
+                    }
+
+                    var read = Stopwatch.StartNew();
+                    testClips = LafanDataset.ReadAll(testFiles, reporter, "Reading test files");
+                    readSeconds = read.Elapsed.TotalSeconds;
+                    var eval = Stopwatch.StartNew();
+                    report = LafanBenchmark.Run(testClips, statistics, methods, options, reporter);
+                    evalSeconds = eval.Elapsed.TotalSeconds;
+                });
+
+            if (saveStats != null && statsPath == null)
+            {
+                File.WriteAllText(saveStats, statistics!.ToJson());
+            }
+
+            PrintTables(report!);
+            int frames = testClips!.Sum(c => c.Motion.FrameCount);
+            string statsLine = statsPath != null
+                ? $"statistics: {statsPath}"
+                : $"statistics: computed from {trainingFileCount} training files in {statsSeconds:0.00} s{(saveStats != null ? ", saved to " + saveStats : "")}";
+            AnsiConsole.MarkupLine(Markup.Escape(
+                $"{report!.WindowCount} windows of {options.Window} frames every {options.Offset} from {testClips!.Length} test files ({frames:N0} frames); {statsLine}"));
+            AnsiConsole.MarkupLine(Markup.Escape(
+                $"read {testBytes / 1e6:0.0} MB in {readSeconds:0.000} s ({testBytes / 1e6 / Math.Max(readSeconds, 1e-9):0} MB/s), evaluated in {evalSeconds:0.000} s, total {total.Elapsed.TotalSeconds:0.00} s"));
+
+            if (jsonPath != null)
+            {
+                WriteJson(jsonPath, report, statistics!.Source);
+                AnsiConsole.MarkupLine(Markup.Escape($"results written to {jsonPath}"));
+            }
+
+            return 0;
+        }
+
+        private static IReadOnlyList<int> ParseLengths(string text)
+        {
+            var lengths = new List<int>();
+            foreach (string part in text.Split(','))
+            {
+                if (!int.TryParse(part.Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out int n) || n < 1)
+                {
+                    throw new CliErrors.UsageException($"inbetween benchmark: --lengths '{text}' has '{part.Trim()}'; expected comma-separated whole numbers ≥ 1 such as 5,15,30,45");
+                }
+
+                lengths.Add(n);
+            }
+
+            return lengths;
+        }
+
+        private static void PrintTables(BenchmarkReport report)
+        {
+            PrintTable(report, "L2Q", "global quaternion error", t => t.L2Q, "0.0000");
+            PrintTable(report, "L2P", "global position error, standardised", t => t.L2P, "0.0000");
+            PrintTable(report, "NPSS", "power spectrum similarity of global quaternions", t => t.Npss, "0.00000");
+        }
+
+        private static void PrintTable(BenchmarkReport report, string metric, string meaning, Func<MetricTotals, double> value, string format)
+        {
+            var table = new Table().Border(TableBorder.Rounded)
+                .Title($"[bold]{metric}[/] ({Markup.Escape(meaning)}; lower is better)");
+            table.AddColumn(new TableColumn("Lengths"));
+            foreach (int n in report.Lengths) table.AddColumn(new TableColumn(n.ToString(CultureInfo.InvariantCulture)).RightAligned());
+            for (int m = 0; m < report.MethodIds.Count; m++)
+            {
+                var cells = new List<string> { Markup.Escape(report.MethodNames[m]) };
+                foreach (int n in report.Lengths)
+                {
+                    cells.Add(value(report.Get(report.MethodIds[m], n)).ToString(format, CultureInfo.InvariantCulture));
+                }
+
+                table.AddRow(cells.ToArray());
+            }
+
+            AnsiConsole.Write(table);
+        }
+
+        private static void WriteJson(string path, BenchmarkReport report, string statsSource)
+        {
+            using var stream = File.Create(path);
+            using var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true });
+            w.WriteStartObject();
+            w.WriteNumber("windows", report.WindowCount);
+            w.WriteNumber("window", report.Window);
+            w.WriteNumber("offset", report.Offset);
+            w.WriteString("stats", statsSource);
+            w.WriteStartObject("results");
+            for (int m = 0; m < report.MethodIds.Count; m++)
+            {
+                string id = report.MethodIds[m];
+                w.WriteStartObject(id);
+                WriteMetric(w, report, id, "l2q", t => t.L2Q);
+                WriteMetric(w, report, id, "l2p", t => t.L2P);
+                WriteMetric(w, report, id, "npss", t => t.Npss);
+                w.WriteEndObject();
+            }
+
+            w.WriteEndObject();
+            w.WriteEndObject();
+        }
+
+        private static void WriteMetric(Utf8JsonWriter w, BenchmarkReport report, string id, string name, Func<MetricTotals, double> value)
+        {
+            w.WriteStartObject(name);
+            foreach (int n in report.Lengths) w.WriteNumber(n.ToString(CultureInfo.InvariantCulture), value(report.Get(id, n)));
+            w.WriteEndObject();
+        }
+    }
+}
