@@ -70,11 +70,20 @@ def predict(model: DeltaInterpolator, batch: TransitionBatch, with_keys: bool):
     key_idx = torch.tensor(layout.key_frames)
     query_idx = torch.tensor(layout.query_frames)
     gap = torch.tensor([layout.gap])
-    mode = getattr(model, "module", model).config.output_delta_mode
+    net = getattr(model, "module", model)
+    mode = net.config.output_delta_mode
+    # The network may run in another precision than the geometry (evaluation and fixtures do the
+    # localization and decoding in float64, as the C# runtime does, around a float32 network).
+    net_dtype = next(net.parameters()).dtype
+    geo_dtype = batch.base_root.dtype
+    feats = batch.key_features.to(net_dtype)
+    qfeats = None if batch.query_features is None else batch.query_features.to(net_dtype)
     if with_keys:
-        (kr, k6), (qr, q6) = model(batch.key_features, key_idx, query_idx, gap, batch.query_features, with_keys=True)
+        (kr, k6), (qr, q6) = model(feats, key_idx, query_idx, gap, qfeats, with_keys=True)
+        kr, k6 = kr.to(geo_dtype), k6.to(geo_dtype)
     else:
-        qr, q6 = model(batch.key_features, key_idx, query_idx, gap, batch.query_features)
+        qr, q6 = model(feats, key_idx, query_idx, gap, qfeats)
+    qr, q6 = qr.to(geo_dtype), q6.to(geo_dtype)
     root, rot = decode_outputs(mode, batch.base_root, batch.base_rotations, qr, q6)
     if not with_keys:
         return root, rot, None, None

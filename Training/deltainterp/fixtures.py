@@ -1,0 +1,223 @@
+"""Test fixtures for the C# runtime: a tiny model (checkpoint + three ONNX graphs) and golden vectors.
+
+The tiny model has the `tiny` architecture on the 22-joint LaFAN1 skeleton. Its output heads are set to
+seeded random NON-ZERO values, so its output is not plain SLERP and every stage of the pipeline
+(localization, key features, network, decoding, un-localization, FK) is visible in the golden numbers.
+Requests are synthetic (smooth seeded joint motion) with varied root positions and facings, so that the
+fixtures do not depend on LaFAN1 being present. Everything is deterministic: same files on every run.
+"""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Dict, List, Optional
+
+import numpy as np
+import torch
+
+from . import contract as C
+from . import quaternions
+from .checkpoint import LoadedModel, load_checkpoint
+from .decoding import decode_outputs
+from .kinematics import forward_kinematics
+from .lafan1 import lafan1_skeleton
+from .localize import unlocalize
+from .model import DeltaInterpolator, preset
+from .objective import make_batch
+from .sampler import TransitionSampler
+from .skeleton import Skeleton
+
+Tensor = torch.Tensor
+SEED = 1234
+HEAD_STD = 0.01          # random head weights: visible deltas (a few degrees, a few cm), sane poses
+UNIT_SCALE = 0.01        # cm → m, as the LaFAN1 models
+MODEL_NAME = "tiny-model"
+SIGNIFICANT_DIGITS = 9   # float32 round-trips exactly; float64 poses keep ~1e-9 relative accuracy
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    past: int
+    gap: int
+    origin_xz: tuple          # world root XZ at the last past key, cm
+    facing_deg: float         # facing at the last past key: yaw about +Y applied to +X
+    turn_deg: float           # how much the facing turns from the last past key to the target
+    speed: float              # cm per frame along the facing
+    seed: int
+    flip_target_signs: bool = False  # negate some target quaternions (same rotations, other hemisphere)
+
+
+CASES = (
+    Case("n1_facing_plus_x_at_origin", 10, 1, (0.0, 0.0), 0.0, 10.0, 1.0, 1),
+    Case("n5_facing_minus_x", 10, 5, (250.0, -130.0), 178.0, -30.0, 2.5, 2),
+    Case("n30_far_facing_minus_z_turning", 10, 30, (1234.5, 567.8), 90.0, 120.0, 3.0, 3),
+    Case("n15_target_sign_flips", 10, 15, (-80.0, 40.0), -135.0, 45.0, 1.5, 4, True),
+    Case("n12_short_history_p4", 4, 12, (35.0, -410.0), 60.0, -75.0, 2.0, 5),
+    Case("n8_half_turn", 10, 8, (-620.0, -15.0), -20.0, 200.0, 0.5, 6),
+)
+
+
+def make_tiny_model(skeleton: Skeleton, seed: int = SEED) -> LoadedModel:
+    torch.manual_seed(seed)
+    model = DeltaInterpolator(preset("tiny", joints=skeleton.joint_count))
+    g = torch.Generator().manual_seed(seed + 1)
+    with torch.no_grad():
+        for head in (model.root_head, model.rotation_head):
+            head.weight.copy_(torch.randn(head.weight.shape, generator=g) * HEAD_STD)
+            head.bias.copy_(torch.randn(head.bias.shape, generator=g) * HEAD_STD)
+    model.eval()
+    return LoadedModel(model, skeleton, UNIT_SCALE, 0,
+                       data_description="none: untrained tiny fixture with random non-zero heads")
+
+
+def checkpoint_state(loaded: LoadedModel) -> Dict:
+    """A checkpoint `load_checkpoint` (hence evaluate/export) accepts."""
+    return {"model": loaded.model.state_dict(), "model_config": loaded.config.to_dict(),
+            "skeleton": loaded.skeleton.to_json(), "unit_scale": loaded.unit_scale, "step": loaded.step,
+            "train_config": {}, "validation": {}, "fps": loaded.fps,
+            "data_description": loaded.data_description}
+
+
+# -- synthetic requests ------------------------------------------------------------------------------
+_HIPS_FACING_PLUS_X = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+# columns: LaFAN1 hips local +X (spine) → world +Y, local +Y (forward) → world +X, local +Z (left) → −Z
+
+
+def _axis_angle_to_quat(v: np.ndarray) -> np.ndarray:
+    angle = np.linalg.norm(v, axis=-1, keepdims=True)
+    axis = v / np.maximum(angle, 1e-12)
+    return np.concatenate((np.cos(angle / 2), np.sin(angle / 2) * axis), axis=-1)
+
+
+def synthetic_request(case: Case, joints: int):
+    """World root positions (L, 3) cm and local quaternions (L, J, 4) for frames 0..P+n (the missing
+    frames are included for convenience only; golden requests never expose them)."""
+    rng = np.random.default_rng(case.seed)
+    length = case.past + case.gap + 1
+    r = case.past - 1
+    t = np.arange(length, dtype=np.float64)
+    progress = (t - r) / (case.gap + 1)
+    yaw = np.radians(case.facing_deg + case.turn_deg * progress)
+    yaw_q = np.stack((np.cos(yaw / 2), 0 * yaw, np.sin(yaw / 2), 0 * yaw), -1)
+    base = quaternions.from_matrix(torch.from_numpy(_HIPS_FACING_PLUS_X)).numpy()
+    wobble = _axis_angle_to_quat(0.08 * np.sin(0.3 * t[:, None] + rng.uniform(0, 6.3, 3)))
+    root_q = quaternions.multiply(torch.from_numpy(yaw_q), quaternions.multiply(
+        torch.from_numpy(base).expand(length, 4), torch.from_numpy(wobble))).numpy()
+    amplitude = rng.uniform(0.05, 0.45, (1, joints, 3))
+    omega = rng.uniform(0.05, 0.35, (1, joints, 3))
+    phase = rng.uniform(0, 2 * math.pi, (1, joints, 3))
+    rest = rng.uniform(-0.3, 0.3, (1, joints, 3))
+    local = _axis_angle_to_quat(rest + amplitude * np.sin(omega * t[:, None, None] + phase))
+    local[:, 0] = root_q
+    heading = np.stack((np.cos(yaw), 0 * yaw, -np.sin(yaw)), -1)  # yaw about +Y applied to +X
+    step = np.cumsum(np.concatenate(([0.0], np.ones(length - 1))) * case.speed)[:, None] * heading
+    step = step - step[r]
+    root = step + np.array([case.origin_xz[0], 0.0, case.origin_xz[1]])
+    root[:, 1] = 88.0 + 3.0 * np.sin(0.4 * t + rng.uniform(0, 6.3))
+    if case.flip_target_signs:
+        local[-1, ::2] *= -1.0  # every other joint's target in the opposite hemisphere
+    return root, local
+
+
+def _round(x) -> object:
+    if isinstance(x, (list, tuple)):
+        return [_round(v) for v in x]
+    v = float(x)
+    return float(f"{v:.{SIGNIFICANT_DIGITS}g}") if v != 0.0 else 0.0
+
+
+def _tolist(t) -> list:
+    return _round(np.asarray(t, dtype=np.float64).tolist())
+
+
+def golden_case(loaded: LoadedModel, case: Case) -> Dict:
+    model, cfg = loaded.model, loaded.config
+    root, local = synthetic_request(case, cfg.joints)
+    p, n = case.past, case.gap
+    filled_root, filled_local = root.copy(), local.copy()
+    filled_root[p:p + n] = root[p - 1]        # the missing frames are unknown to a request
+    filled_local[p:p + n] = local[p - 1]
+    layout = TransitionSampler(past=p, min_gap=1, max_gap=max(n, 1)).layout(n)
+    skeleton = loaded.skeleton_tensors(torch.float64)
+    batch = make_batch(torch.from_numpy(filled_root)[None], torch.from_numpy(filled_local)[None], layout,
+                       skeleton, cfg.output_delta_mode, cfg.input_delta_mode)
+    features = batch.key_features.float()  # what the runtime feeds the float32 graph
+    key_idx = torch.tensor(layout.key_frames, dtype=torch.int64)
+    query_idx = torch.tensor(layout.query_frames, dtype=torch.int64)
+    gap = torch.tensor([n], dtype=torch.int64)
+    with torch.no_grad():
+        root_delta, rot_delta = model(features, key_idx, query_idx, gap)
+    pred_root, pred_rot = decode_outputs(cfg.output_delta_mode, batch.base_root, batch.base_rotations,
+                                         root_delta.double(), rot_delta.double())
+    world_root, world_rot = unlocalize(pred_root, pred_rot, batch.localization, loaded.unit_scale)
+    offsets = torch.from_numpy(loaded.skeleton.offsets)
+    _, world_pos = forward_kinematics(world_rot, world_root, offsets, loaded.skeleton.parents)
+    return {
+        "name": case.name, "past_frames": p, "gap": n,
+        "past_root_positions": _tolist(root[:p]),
+        "past_local_quaternions": _tolist(local[:p]),
+        "target_root_position": _tolist(root[-1]),
+        "target_local_quaternions": _tolist(local[-1]),
+        "localization": {"yaw": _tolist(batch.localization.yaw[0]),
+                         "origin": _tolist(batch.localization.origin[0])},
+        "inputs": {C.KEY_FEATURES: _tolist(features.reshape(-1)), C.KEY_FRAME_INDICES: layout.key_frames,
+                   C.QUERY_FRAME_INDICES: layout.query_frames, C.GAP_LENGTH: [n]},
+        "outputs": {C.ROOT_POSITION_DELTA: _tolist(root_delta.reshape(-1)),
+                    C.ROTATION_6D_DELTA: _tolist(rot_delta.reshape(-1))},
+        "result": {"root_positions": _tolist(world_root[0]), "local_quaternions": _tolist(world_rot[0]),
+                   "global_positions": _tolist(world_pos[0])},
+    }
+
+
+def golden_document(loaded: LoadedModel, cases=CASES) -> Dict:
+    return {"contract_version": C.CONTRACT_VERSION, "model": f"{MODEL_NAME}.onnx",
+            "cases": [golden_case(loaded, c) for c in cases]}
+
+
+def dump_golden(doc: Dict) -> str:
+    """Compact JSON with one case per line: small, and diffs stay readable case by case."""
+    head = {k: v for k, v in doc.items() if k != "cases"}
+    body = ",\n".join(json.dumps(c, separators=(",", ":")) for c in doc["cases"])
+    return json.dumps(head, separators=(",", ":"))[:-1] + ',"cases":[\n' + body + "\n]}\n"
+
+
+def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-5) -> float:
+    """Feed every golden case's inputs to the exported whole graph (numpy evaluator); compare outputs."""
+    from .onnx_reference import run_model
+    import onnx
+    proto = onnx.load(str(onnx_path))
+    worst = 0.0
+    for case in doc["cases"]:
+        inp = case["inputs"]
+        k = len(inp[C.KEY_FRAME_INDICES])
+        feeds = {C.KEY_FEATURES: np.asarray(inp[C.KEY_FEATURES], np.float32).reshape(1, k, -1),
+                 C.KEY_FRAME_INDICES: np.asarray(inp[C.KEY_FRAME_INDICES], np.int64),
+                 C.QUERY_FRAME_INDICES: np.asarray(inp[C.QUERY_FRAME_INDICES], np.int64),
+                 C.GAP_LENGTH: np.asarray(inp[C.GAP_LENGTH], np.int64)}
+        got = run_model(proto, feeds)
+        for name in (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA):
+            d = float(np.abs(got[name].reshape(-1) - np.asarray(case["outputs"][name])).max())
+            worst = max(worst, d)
+            if d > tolerance:
+                raise ValueError(f"golden case {case['name']}: ONNX {name} differs by {d:.3g}")
+    return worst
+
+
+def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -> Dict[str, Path]:
+    """tiny-model.pt, tiny-model{,.keys,.frame}.onnx and golden.json in `out_dir`."""
+    from .export import export_model
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    loaded = make_tiny_model(lafan1_skeleton(data_dir))
+    ckpt = out / f"{MODEL_NAME}.pt"
+    torch.save(checkpoint_state(loaded), ckpt)
+    loaded = load_checkpoint(ckpt)  # everything below goes through what evaluate/export would load
+    report = export_model(loaded, out / f"{MODEL_NAME}.onnx", name="DeltaInterpolator-tiny-fixture")
+    doc = golden_document(loaded)
+    check_golden_against_onnx(doc, report.paths["whole"])
+    golden = out / "golden.json"
+    golden.write_text(dump_golden(doc))
+    return {"checkpoint": ckpt, **{f"onnx_{k}": v for k, v in report.paths.items()}, "golden": golden}

@@ -1,0 +1,188 @@
+"""A small numpy evaluator for the ONNX operator subset our exporter emits.
+
+onnxruntime is not available to the Python side, so the exported FILE is checked by running its nodes
+here, one by one, in float32 (as a runtime would) — a stronger check than comparing with a traced torch
+module, because it reads exactly what the C# runtime will load. Semantics follow the ONNX operator
+specification (opset 13–15 forms: axes of Unsqueeze/Squeeze/ReduceSum as inputs, ReduceMean's `axes`
+as an attribute, Softmax over one axis).
+"""
+from __future__ import annotations
+
+from typing import Callable, Dict, List
+
+import numpy as np
+
+Array = np.ndarray
+
+
+def _attrs(node) -> Dict[str, object]:
+    import onnx
+    import onnx.numpy_helper
+    return {a.name: onnx.helper.get_attribute_value(a) for a in node.attribute}
+
+
+def _axes(values, rank: int) -> List[int]:
+    return sorted(int(a) + rank if int(a) < 0 else int(a) for a in values)
+
+
+def _gemm(ins, at):
+    a, b = ins[0], ins[1]
+    if at.get("transA", 0):
+        a = a.T
+    if at.get("transB", 0):
+        b = b.T
+    y = at.get("alpha", 1.0) * (a @ b)
+    if len(ins) > 2 and ins[2] is not None:
+        y = y + at.get("beta", 1.0) * ins[2]
+    return y
+
+
+def _softmax(ins, at):
+    x = ins[0]
+    axis = int(at.get("axis", -1))
+    e = np.exp(x - x.max(axis=axis, keepdims=True))
+    return e / e.sum(axis=axis, keepdims=True)
+
+
+def _reshape(ins, at):
+    x, shape = ins[0], [int(s) for s in ins[1]]
+    if not at.get("allowzero", 0):
+        shape = [x.shape[i] if s == 0 else s for i, s in enumerate(shape)]
+    return x.reshape(shape)
+
+
+def _slice(ins, at):
+    x = ins[0]
+    starts, ends = ins[1], ins[2]
+    axes = ins[3] if len(ins) > 3 and ins[3] is not None else np.arange(len(starts))
+    steps = ins[4] if len(ins) > 4 and ins[4] is not None else np.ones(len(starts), dtype=np.int64)
+    index = [slice(None)] * x.ndim
+    for s, e, a, st in zip(starts, ends, axes, steps):
+        a = int(a) + x.ndim if a < 0 else int(a)
+        dim = x.shape[a]
+        s, e = int(max(min(s, 2 ** 62), -2 ** 62)), int(max(min(e, 2 ** 62), -2 ** 62))
+        index[a] = slice(*slice(s, e, int(st)).indices(dim))
+    return x[tuple(index)]
+
+
+def _unsqueeze(ins, at):
+    x = ins[0]
+    axes = ins[1] if len(ins) > 1 else at["axes"]
+    for a in _axes(axes, x.ndim + len(axes)):
+        x = np.expand_dims(x, a)
+    return x
+
+
+def _squeeze(ins, at):
+    x = ins[0]
+    axes = ins[1] if len(ins) > 1 and ins[1] is not None else at.get("axes")
+    if axes is None:
+        return np.squeeze(x)
+    return np.squeeze(x, axis=tuple(_axes(axes, x.ndim)))
+
+
+def _reduce(fn):
+    def op(ins, at):
+        x = ins[0]
+        axes = at.get("axes")
+        if axes is None and len(ins) > 1 and ins[1] is not None:
+            axes = ins[1]
+        keep = bool(at.get("keepdims", 1))
+        if axes is None or len(axes) == 0:
+            return fn(x, axis=None, keepdims=keep)
+        return fn(x, axis=tuple(_axes(axes, x.ndim)), keepdims=keep)
+    return op
+
+
+def _cast(ins, at):
+    import onnx
+    import onnx.numpy_helper
+    return ins[0].astype(onnx.helper.tensor_dtype_to_np_dtype(at["to"]))
+
+
+def _constant(ins, at):
+    import onnx
+    import onnx.numpy_helper
+    if "value" in at:
+        return onnx.numpy_helper.to_array(at["value"])
+    for key in ("value_float", "value_int"):
+        if key in at:
+            return np.array(at[key])
+    for key in ("value_floats", "value_ints"):
+        if key in at:
+            return np.array(at[key])
+    raise NotImplementedError(f"Constant with attributes {sorted(at)}")
+
+
+def _keep_dtype(fn):
+    """Binary arithmetic in the inputs' dtype (numpy would promote int64 ⊕ float32 etc.)."""
+    def op(ins, at):
+        out = fn(ins[0], ins[1])
+        return out.astype(np.result_type(ins[0].dtype, ins[1].dtype), copy=False)
+    return op
+
+
+OPS: Dict[str, Callable] = {
+    "Add": _keep_dtype(np.add),
+    "Sub": _keep_dtype(np.subtract),
+    "Mul": _keep_dtype(np.multiply),
+    "Div": lambda i, a: (i[0] // i[1]) if np.issubdtype(i[0].dtype, np.integer) else i[0] / i[1],
+    "Pow": lambda i, a: np.power(i[0], i[1]).astype(i[0].dtype),
+    "Neg": lambda i, a: -i[0],
+    "Sqrt": lambda i, a: np.sqrt(i[0]),
+    "Exp": lambda i, a: np.exp(i[0]),
+    "Relu": lambda i, a: np.maximum(i[0], 0).astype(i[0].dtype),
+    "LeakyRelu": lambda i, a: np.where(i[0] >= 0, i[0], i[0] * np.float32(a.get("alpha", 0.01))).astype(i[0].dtype),
+    "Tanh": lambda i, a: np.tanh(i[0]),
+    "Sigmoid": lambda i, a: 1.0 / (1.0 + np.exp(-i[0])),
+    "MatMul": lambda i, a: np.matmul(i[0], i[1]),
+    "Gemm": _gemm,
+    "Softmax": _softmax,
+    "ReduceMean": _reduce(np.mean),
+    "ReduceSum": _reduce(np.sum),
+    "ReduceMax": _reduce(np.max),
+    "Reshape": _reshape,
+    "Transpose": lambda i, a: np.transpose(i[0], a.get("perm")),
+    "Gather": lambda i, a: np.take(i[0], i[1].astype(np.int64), axis=int(a.get("axis", 0))),
+    "Concat": lambda i, a: np.concatenate(i, axis=int(a["axis"])),
+    "Slice": _slice,
+    "Unsqueeze": _unsqueeze,
+    "Squeeze": _squeeze,
+    "Shape": lambda i, a: np.array(i[0].shape, dtype=np.int64)[a.get("start", 0):a.get("end", None)],
+    "Expand": lambda i, a: i[0] * np.ones([int(s) for s in i[1]], dtype=i[0].dtype),
+    "Cast": _cast,
+    "Constant": _constant,
+    "Identity": lambda i, a: i[0],
+    "Dropout": lambda i, a: i[0],
+}
+
+
+def run_graph(graph, feeds: Dict[str, Array]) -> Dict[str, Array]:
+    """Evaluate an onnx.GraphProto on numpy inputs; returns every graph output by name."""
+    import onnx
+    import onnx.numpy_helper
+    values: Dict[str, Array] = {init.name: onnx.numpy_helper.to_array(init) for init in graph.initializer}
+    for inp in graph.input:
+        if inp.name in values:
+            continue
+        if inp.name not in feeds:
+            raise KeyError(f"missing input '{inp.name}'")
+        values[inp.name] = np.asarray(feeds[inp.name])
+    for node in graph.node:
+        if node.op_type not in OPS:
+            raise NotImplementedError(f"onnx_reference has no '{node.op_type}' (node {node.name})")
+        ins = [values[n] if n else None for n in node.input]
+        out = OPS[node.op_type](ins, _attrs(node))
+        if len(node.output) != 1:
+            raise NotImplementedError(f"{node.op_type} with {len(node.output)} outputs")
+        values[node.output[0]] = np.asarray(out)
+    return {o.name: values[o.name] for o in graph.output}
+
+
+def run_model(model, feeds: Dict[str, Array]) -> Dict[str, Array]:
+    """`model`: an onnx.ModelProto or a path."""
+    import onnx
+    import onnx.numpy_helper
+    if not hasattr(model, "graph"):
+        model = onnx.load(str(model))
+    return run_graph(model.graph, feeds)
