@@ -1,0 +1,369 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Inference
+{
+    /// <summary>
+    /// The Δ-Interpolator pipeline on any <see cref="IInferenceBackend"/>: a <see cref="Transition"/>
+    /// (P past keys, a target key, n missing frames, world space, data units) → <see cref="Localizer"/> →
+    /// input builders → network → <see cref="DeltaBaseline"/> + deltas → <see cref="OutputDecoder"/> →
+    /// un-localize → the missing frames' root positions and local rotations (and FK positions on request).
+    /// The benchmark, the CLI and the Unity component all go through this one class.
+    /// </summary>
+    /// <remarks>
+    /// <para>Buffers and backend bindings are created once per request shape (P, n) and reused: after the
+    /// first call of a shape, <see cref="Inbetween(Transition)"/> allocates nothing.</para>
+    /// <para>Not thread-safe: use one instance per thread (each owns its backends). Dispose it to release
+    /// the backends it was given.</para>
+    /// </remarks>
+    public sealed class Inbetweener : IInbetweener, IDisposable
+    {
+        private readonly IInferenceBackend _whole;
+        private readonly IInferenceBackend? _keys;
+        private readonly IInferenceBackend? _frame;
+        private readonly KeyFeatureBuilder _features;
+        private readonly Dictionary<long, Workspace> _workspaces = new Dictionary<long, Workspace>();
+        private readonly List<LazyTransition> _lazy = new List<LazyTransition>();
+        private Skeleton? _checkedSkeleton;
+        private Workspace? _last;
+        private bool _disposed;
+
+        /// <summary>
+        /// Checks the contract of every graph (metadata, tensor names, constant outputs from one probe run)
+        /// and takes ownership of the backends.
+        /// </summary>
+        /// <param name="whole">The whole-transition graph (<c>NAME.onnx</c>).</param>
+        /// <param name="keys">The lazy keys graph (<c>NAME.keys.onnx</c>), or null.</param>
+        /// <param name="frame">The lazy frame graph (<c>NAME.frame.onnx</c>), or null; needed with <paramref name="keys"/>.</param>
+        /// <exception cref="ModelContractException">A graph does not fit the contract; the message says what to do.</exception>
+        public Inbetweener(IInferenceBackend whole, IInferenceBackend? keys = null, IInferenceBackend? frame = null)
+        {
+            _whole = whole ?? throw new ArgumentNullException(nameof(whole));
+            try
+            {
+                Contract = ModelContract.Read(whole.Description, ModelGraphKind.Whole);
+                if ((keys == null) != (frame == null))
+                {
+                    throw new ArgumentException("lazy decoding needs both the keys and the frame graph (or neither)");
+                }
+
+                if (keys != null && frame != null)
+                {
+                    KeysContract = ModelContract.Read(keys.Description, ModelGraphKind.Keys);
+                    FrameContract = ModelContract.Read(frame.Description, ModelGraphKind.Frame);
+                    Contract.CheckSameExport(KeysContract);
+                    Contract.CheckSameExport(FrameContract);
+                    _keys = keys;
+                    _frame = frame;
+                }
+
+                _features = new KeyFeatureBuilder(Contract);
+                Probe();
+            }
+            catch
+            {
+                whole.Dispose();
+                keys?.Dispose();
+                frame?.Dispose();
+                throw;
+            }
+        }
+
+        /// <summary>The whole graph's contract (skeleton, unit scale, delta mode, architecture).</summary>
+        public ModelContract Contract { get; }
+
+        /// <summary>The keys graph's contract, or null without lazy graphs.</summary>
+        public ModelContract? KeysContract { get; }
+
+        /// <summary>The frame graph's contract, or null without lazy graphs.</summary>
+        public ModelContract? FrameContract { get; }
+
+        /// <summary>True when the lazy graphs were given: <see cref="CreateLazy"/> works.</summary>
+        public bool SupportsLazyDecoding => _keys != null;
+
+        /// <inheritdoc />
+        public string Id { get; set; } = "model";
+
+        /// <inheritdoc />
+        public string DisplayName { get; set; } = "Δ-Interp.";
+
+        /// <summary>The <c>key_features</c> fed by the last whole-transition call (K × 9J), for diagnostics and parity tests.</summary>
+        public ReadOnlySpan<float> LastKeyFeatures => _last == null ? default : _last.KeyFeatures.Floats;
+
+        /// <summary>The raw <c>root_position_delta</c> of the last whole-transition call (n × 3).</summary>
+        public ReadOnlySpan<float> LastRootPositionDelta => _last == null ? default : _last.RootDelta.Floats;
+
+        /// <summary>The raw <c>rotation_6d_delta</c> of the last whole-transition call (n × J × 6).</summary>
+        public ReadOnlySpan<float> LastRotation6DDelta => _last == null ? default : _last.RotationDelta.Floats;
+
+        /// <summary>The localization of the last whole-transition call.</summary>
+        public Localization LastLocalization { get; private set; }
+
+        /// <summary>
+        /// Fills every missing frame of <paramref name="transition"/> in one network run.
+        /// </summary>
+        /// <exception cref="ModelContractException">The transition's skeleton is not the model's.</exception>
+        /// <exception cref="ArgumentException">P + n exceeds the model's largest frame index.</exception>
+        public void Inbetween(Transition transition)
+        {
+            Workspace w = Prepare(transition);
+            FrameIndexBuilder.QueryFrames(transition.PastFrames, 0, w.QueryFrames.Longs);
+            w.Binding.Run();
+            _last = w;
+            LastLocalization = w.Localization;
+            for (int k = 0; k < transition.MissingFrames; k++)
+            {
+                DecodeFrame(transition, w, k, k);
+            }
+        }
+
+        /// <summary>
+        /// <see cref="Inbetween(Transition)"/>, then FK of the missing frames with the transition's
+        /// skeleton (world, data units) into <paramref name="globalPositions"/> (n × J × 3).
+        /// </summary>
+        public void Inbetween(Transition transition, Span<double> globalPositions)
+        {
+            Inbetween(transition);
+            Workspace w = _last!;
+            ForwardKinematics.Compute(transition.Skeleton, transition.MissingFrames, transition.RootPositions, transition.LocalRotations, globalPositions, w.GlobalRotations);
+        }
+
+        /// <summary>
+        /// A reusable lazy decoder for transitions of P past keys and n missing frames: it encodes the
+        /// keys once per transition (<see cref="LazyTransition.Begin"/>) and decodes frames one at a time
+        /// (<see cref="LazyTransition.DecodeFrame"/>), each costing a fraction of a whole transition.
+        /// Owned by this inbetweener (disposed with it).
+        /// </summary>
+        /// <exception cref="InvalidOperationException">The lazy graphs were not loaded.</exception>
+        public LazyTransition CreateLazy(int pastFrames, int missingFrames)
+        {
+            ThrowIfDisposed();
+            if (_keys == null || _frame == null)
+            {
+                throw new InvalidOperationException($"{Contract.Source} was loaded without its .keys.onnx and .frame.onnx graphs; export them (python3 -m deltainterp export writes all three) and load them beside the whole graph");
+            }
+
+            CheckLength(pastFrames, missingFrames);
+            var lazy = new LazyTransition(this, _keys, _frame, pastFrames, missingFrames);
+            _lazy.Add(lazy);
+            return lazy;
+        }
+
+        /// <summary>Releases the bindings and the backends.</summary>
+        public void Dispose()
+        {
+            if (_disposed) return;
+            _disposed = true;
+            foreach (LazyTransition l in _lazy) l.DisposeBindings();
+            foreach (Workspace w in _workspaces.Values) w.Binding.Dispose();
+            _workspaces.Clear();
+            _whole.Dispose();
+            _keys?.Dispose();
+            _frame?.Dispose();
+        }
+
+        internal KeyFeatureBuilder Features => _features;
+
+        internal void CheckSkeleton(Skeleton skeleton)
+        {
+            if (ReferenceEquals(skeleton, _checkedSkeleton)) return;
+            Contract.CheckSkeleton(skeleton, "the transition's skeleton");
+            _checkedSkeleton = skeleton;
+        }
+
+        internal void CheckLength(int pastFrames, int missingFrames)
+        {
+            if (pastFrames < 1 || missingFrames < 1) throw new ArgumentException($"P = {pastFrames}, n = {missingFrames}; expected at least one past key and one missing frame");
+            if (pastFrames + missingFrames > Contract.MaxFrameIndex)
+            {
+                throw new ArgumentException($"P + n = {pastFrames} + {missingFrames} = {pastFrames + missingFrames} exceeds the model's largest frame index {Contract.MaxFrameIndex}; use fewer past keys or split the gap");
+            }
+        }
+
+        /// <summary>Localizes the keys and builds the inputs of the keys, common to whole and lazy runs.</summary>
+        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, InferenceTensor keyFeatures, InferenceTensor keyFrames, InferenceTensor gap)
+        {
+            int keys = t.KeyFrameCount;
+            int reference = t.PastFrames - 1;
+            Localization loc = Localizer.Localize(Contract, t.KeyRootPositions, t.KeyLocalRotations, keys, reference, localRoot, localRotations);
+            _features.Build(localRoot, localRotations, keys, reference, keyFeatures.Floats);
+            FrameIndexBuilder.KeyFrames(t.PastFrames, t.MissingFrames, keyFrames.Longs);
+            FrameIndexBuilder.Gap(t.MissingFrames, gap.Longs);
+            return loc;
+        }
+
+        /// <summary>
+        /// Decodes network output row <paramref name="row"/> into missing frame <paramref name="k"/> of the
+        /// transition (world space). Shared by the whole and the lazy paths, so both are identical maths.
+        /// </summary>
+        internal void Decode(Transition t, Localization loc, double[] localRoot, double[] localRotations, float[] rootDelta, float[] rotationDelta, int row, int k)
+        {
+            int jc = Contract.JointCount;
+            int n = t.MissingFrames;
+            int last = t.PastFrames - 1;
+            int target = t.PastFrames;
+            OutputDeltaMode mode = Contract.OutputDeltaMode;
+            double a = DeltaBaseline.Weight(k, n);
+            Vector3D baseRoot = DeltaBaseline.RootPosition(mode, Vector3D.Read(localRoot, 3 * last), Vector3D.Read(localRoot, 3 * target), a);
+            Vector3D root = OutputDecoder.RootPosition(baseRoot, new ReadOnlySpan<float>(rootDelta, 3 * row, 3));
+            loc.UnlocalizePosition(root).Write(t.RootPositions, 3 * k);
+            double[] output = t.LocalRotations;
+            for (int j = 0; j < jc; j++)
+            {
+                QuaternionD q0 = Quaternions.Normalize(QuaternionD.Read(localRotations, (last * jc + j) * 4));
+                QuaternionD q1 = Quaternions.Normalize(QuaternionD.Read(localRotations, (target * jc + j) * 4));
+                QuaternionD baseRotation = DeltaBaseline.Rotation(mode, q0, q1, a);
+                QuaternionD q = OutputDecoder.Rotation(mode, baseRotation, new ReadOnlySpan<float>(rotationDelta, (row * jc + j) * 6, 6));
+                if (j == 0) q = loc.UnlocalizeRootRotation(q);
+                q.Write(output, (k * jc + j) * 4);
+            }
+        }
+
+        private void DecodeFrame(Transition t, Workspace w, int row, int k)
+        {
+            Decode(t, w.Localization, w.LocalRoot, w.LocalRotations, w.RootDelta.Floats!, w.RotationDelta.Floats!, row, k);
+        }
+
+        private Workspace Prepare(Transition t)
+        {
+            ThrowIfDisposed();
+            if (t == null) throw new ArgumentNullException(nameof(t));
+            CheckSkeleton(t.Skeleton);
+            long key = ((long)t.PastFrames << 32) | (uint)t.MissingFrames;
+            if (!_workspaces.TryGetValue(key, out Workspace? w))
+            {
+                CheckLength(t.PastFrames, t.MissingFrames);
+                w = new Workspace(this, _whole, t.PastFrames, t.MissingFrames, false);
+                _workspaces.Add(key, w);
+            }
+
+            w.Localization = LocalizeAndBuild(t, w.LocalRoot, w.LocalRotations, w.KeyFeatures, w.KeyFrames, w.Gap);
+            return w;
+        }
+
+        private void Probe()
+        {
+            // One run on a neutral request of the smallest shape: reads the constant outputs (which the
+            // metadata cannot prove) and warms the engine up.
+            using (var w = new Workspace(this, _whole, 1, 1, true))
+            {
+                FrameIndexBuilder.KeyFrames(1, 1, w.KeyFrames.Longs);
+                FrameIndexBuilder.QueryFrames(1, 0, w.QueryFrames.Longs);
+                FrameIndexBuilder.Gap(1, w.Gap.Longs);
+                RunProbe(w.Binding, Contract);
+                CheckConstants(Contract, w.Constants!);
+            }
+
+            if (_keys != null && _frame != null)
+            {
+                var a = Contract.Architecture;
+                var features = InferenceTensor.Float(TensorNames.KeyFeatures, 1, 2, Contract.KeyFeatureSize);
+                var keyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, 2);
+                var gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
+                var query = InferenceTensor.Int64(TensorNames.QueryFrameIndices, 1);
+                var memory = InferenceTensor.Float(TensorNames.KeyMemory, a.Blocks, 2, 2, a.Width);
+                FrameIndexBuilder.KeyFrames(1, 1, keyFrames.Longs);
+                FrameIndexBuilder.Gap(1, gap.Longs);
+                query.Longs![0] = 1;
+                InferenceTensor[] keyConstants = ConstantTensors();
+                var keyOutputs = new List<InferenceTensor> { memory };
+                keyOutputs.AddRange(keyConstants);
+                using (IInferenceBinding b = _keys.Bind(new[] { features, keyFrames, gap }, keyOutputs))
+                {
+                    RunProbe(b, KeysContract!);
+                }
+
+                CheckConstants(KeysContract!, keyConstants);
+                InferenceTensor[] frameConstants = ConstantTensors();
+                var frameOutputs = new List<InferenceTensor>
+                {
+                    InferenceTensor.Float(TensorNames.RootPositionDelta, 1, 1, 3),
+                    InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, 1, Contract.JointCount, 6),
+                };
+                frameOutputs.AddRange(frameConstants);
+                using (IInferenceBinding b = _frame.Bind(new[] { memory, query, gap }, frameOutputs))
+                {
+                    RunProbe(b, FrameContract!);
+                }
+
+                CheckConstants(FrameContract!, frameConstants);
+            }
+        }
+
+        private static void RunProbe(IInferenceBinding binding, ModelContract contract)
+        {
+            try
+            {
+                binding.Run();
+            }
+            catch (InvalidOperationException e)
+            {
+                throw new ModelContractException(contract.Source, "a probe run with the contract's input shapes failed (" + e.Message + ")",
+                    "expected a graph that accepts the inputs of Documentation~/model-contract.md; export the checkpoint again");
+            }
+        }
+
+        internal static InferenceTensor[] ConstantTensors() => new[]
+        {
+            InferenceTensor.Int64(TensorNames.ContractVersion, 1),
+            InferenceTensor.Int64(TensorNames.JointCount, 1),
+            InferenceTensor.Int64(TensorNames.KeyFeatureSize, 1),
+        };
+
+        private static void CheckConstants(ModelContract contract, InferenceTensor[] constants)
+        {
+            contract.CheckConstants(constants[0].Longs![0], constants[1].Longs![0], constants[2].Longs![0]);
+        }
+
+        private void ThrowIfDisposed()
+        {
+            if (_disposed) throw new ObjectDisposedException(nameof(Inbetweener));
+        }
+
+        /// <summary>Buffers and binding of one request shape.</summary>
+        private sealed class Workspace : IDisposable
+        {
+            public Workspace(Inbetweener owner, IInferenceBackend backend, int pastFrames, int missingFrames, bool withConstants)
+            {
+                int jc = owner.Contract.JointCount;
+                int keys = pastFrames + 1;
+                LocalRoot = new double[keys * 3];
+                LocalRotations = new double[keys * jc * 4];
+                GlobalRotations = new double[missingFrames * jc * 4];
+                KeyFeatures = InferenceTensor.Float(TensorNames.KeyFeatures, 1, keys, owner.Contract.KeyFeatureSize);
+                KeyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, keys);
+                QueryFrames = InferenceTensor.Int64(TensorNames.QueryFrameIndices, missingFrames);
+                Gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
+                RootDelta = InferenceTensor.Float(TensorNames.RootPositionDelta, 1, missingFrames, 3);
+                RotationDelta = InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, missingFrames, jc, 6);
+                var outputs = new List<InferenceTensor> { RootDelta, RotationDelta };
+                if (withConstants)
+                {
+                    Constants = ConstantTensors();
+                    outputs.AddRange(Constants);
+                }
+
+                Binding = backend.Bind(new[] { KeyFeatures, KeyFrames, QueryFrames, Gap }, outputs);
+            }
+
+            public double[] LocalRoot { get; }
+            public double[] LocalRotations { get; }
+            public double[] GlobalRotations { get; }
+            public InferenceTensor KeyFeatures { get; }
+            public InferenceTensor KeyFrames { get; }
+            public InferenceTensor QueryFrames { get; }
+            public InferenceTensor Gap { get; }
+            public InferenceTensor RootDelta { get; }
+            public InferenceTensor RotationDelta { get; }
+            public InferenceTensor[]? Constants { get; }
+            public IInferenceBinding Binding { get; }
+            public Localization Localization { get; set; }
+
+            public void Dispose() => Binding.Dispose();
+        }
+    }
+}
