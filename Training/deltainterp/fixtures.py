@@ -20,14 +20,12 @@ import torch
 from . import contract as C
 from . import quaternions
 from .checkpoint import LoadedModel, load_checkpoint
-from .decoding import decode_outputs
 from .kinematics import forward_kinematics
 from .lafan1 import lafan1_skeleton
-from .localize import unlocalize
 from .model import DeltaInterpolator, preset
-from .objective import make_batch
 from .sampler import TransitionSampler
 from .skeleton import Skeleton
+from .transition import run_transition
 
 Tensor = torch.Tensor
 SEED = 1234
@@ -134,25 +132,14 @@ def _tolist(t) -> list:
 
 
 def golden_case(loaded: LoadedModel, case: Case) -> Dict:
-    model, cfg = loaded.model, loaded.config
-    root, local = synthetic_request(case, cfg.joints)
+    root, local = synthetic_request(case, loaded.config.joints)
     p, n = case.past, case.gap
-    filled_root, filled_local = root.copy(), local.copy()
-    filled_root[p:p + n] = root[p - 1]        # the missing frames are unknown to a request
-    filled_local[p:p + n] = local[p - 1]
-    layout = TransitionSampler(past=p, min_gap=1, max_gap=max(n, 1)).layout(n)
-    skeleton = loaded.skeleton_tensors(torch.float64)
-    batch = make_batch(torch.from_numpy(filled_root)[None], torch.from_numpy(filled_local)[None], layout,
-                       skeleton, cfg.output_delta_mode, cfg.input_delta_mode)
+    result = run_transition(loaded, torch.from_numpy(root[None, :p]), torch.from_numpy(local[None, :p]),
+                            torch.from_numpy(root[None, -1]), torch.from_numpy(local[None, -1]), n)
+    batch, world_root, world_rot = result.batch, result.root_positions, result.local_quaternions
     features = batch.key_features.float()  # what the runtime feeds the float32 graph
-    key_idx = torch.tensor(layout.key_frames, dtype=torch.int64)
-    query_idx = torch.tensor(layout.query_frames, dtype=torch.int64)
-    gap = torch.tensor([n], dtype=torch.int64)
-    with torch.no_grad():
-        root_delta, rot_delta = model(features, key_idx, query_idx, gap)
-    pred_root, pred_rot = decode_outputs(cfg.output_delta_mode, batch.base_root, batch.base_rotations,
-                                         root_delta.double(), rot_delta.double())
-    world_root, world_rot = unlocalize(pred_root, pred_rot, batch.localization, loaded.unit_scale)
+    layout = TransitionSampler(past=p, min_gap=1, max_gap=n).layout(n)
+    root_delta, rot_delta = result.root_delta, result.rotation_delta
     offsets = torch.from_numpy(loaded.skeleton.offsets)
     _, world_pos = forward_kinematics(world_rot, world_root, offsets, loaded.skeleton.parents)
     return {

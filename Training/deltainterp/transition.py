@@ -1,0 +1,63 @@
+"""One in-betweening request end to end, as the C# runtime runs it (`Runtime/Core/Inference`).
+
+past keys + target key (world, data units) → localize → key features → network → decode → un-localize →
+world root positions and local quaternions of the missing frames. The same functions as training
+(`objective.make_batch`, `objective.predict`), so a model is served exactly as it was trained.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Tuple
+
+import torch
+
+from .checkpoint import LoadedModel
+from .localize import unlocalize
+from .objective import TransitionBatch, make_batch
+from .sampler import TransitionSampler
+
+Tensor = torch.Tensor
+
+
+@dataclass
+class TransitionResult:
+    root_positions: Tensor     # (B, n, 3) world, data units
+    local_quaternions: Tensor  # (B, n, J, 4)
+    batch: TransitionBatch     # localization, key features and baselines
+    root_delta: Tensor         # (B, n, 3) raw network output (network dtype)
+    rotation_delta: Tensor     # (B, n, J, 6)
+
+
+def request_frames(past_roots: Tensor, past_quats: Tensor, target_root: Tensor, target_quats: Tensor,
+                   gap: int) -> Tuple[Tensor, Tensor]:
+    """(B, P, 3), (B, P, J, 4), (B, 3), (B, J, 4) → the (B, P+n+1) frame track `make_batch` takes. The
+    missing frames are unknown to a request: they hold copies of the last past key and are never read."""
+    filler_r = past_roots[:, -1:].expand(-1, gap, -1)
+    filler_q = past_quats[:, -1:].expand(-1, gap, -1, -1)
+    roots = torch.cat((past_roots, filler_r, target_root[:, None]), 1)
+    quats = torch.cat((past_quats, filler_q, target_quats[:, None]), 1)
+    return roots, quats
+
+
+def run_transition(loaded: LoadedModel, past_roots: Tensor, past_quats: Tensor, target_root: Tensor,
+                   target_quats: Tensor, gap: int) -> TransitionResult:
+    """Geometry runs in the dtype of the inputs (float64 recommended); the network in its own dtype."""
+    from .decoding import decode_outputs
+    if gap < 1:
+        raise ValueError("a transition needs at least one missing frame")
+    past = int(past_roots.shape[1])
+    layout = TransitionSampler(past=past, min_gap=1, max_gap=gap).layout(gap)
+    skeleton = loaded.skeleton_tensors(past_roots.dtype)
+    cfg = loaded.config
+    roots, quats = request_frames(past_roots, past_quats, target_root, target_quats, gap)
+    batch = make_batch(roots, quats, layout, skeleton, cfg.output_delta_mode, cfg.input_delta_mode)
+    net_dtype = next(loaded.model.parameters()).dtype
+    qf = None if batch.query_features is None else batch.query_features.to(net_dtype)
+    with torch.no_grad():
+        root_delta, rotation_delta = loaded.model(
+            batch.key_features.to(net_dtype), torch.tensor(layout.key_frames), torch.tensor(layout.query_frames),
+            torch.tensor([gap]), qf)
+    root, rot = decode_outputs(cfg.output_delta_mode, batch.base_root, batch.base_rotations,
+                               root_delta.to(batch.base_root.dtype), rotation_delta.to(batch.base_root.dtype))
+    world_root, world_rot = unlocalize(root, rot, batch.localization, loaded.unit_scale)
+    return TransitionResult(world_root, world_rot, batch, root_delta, rotation_delta)
