@@ -130,7 +130,13 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             var methods = new IInbetweener[] { new ZeroVelocityBaseline(), new SlerpBaseline() };
-            IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings { Out = new AnsiConsoleOutput(Console.Error) });
+            // Progress goes to stderr so stdout holds only the results; when stderr is not a terminal
+            // (CI logs, pipes) the bars are skipped instead of leaving escape-code residue.
+            IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings
+            {
+                Out = new AnsiConsoleOutput(Console.Error),
+                Interactive = Console.IsErrorRedirected ? InteractionSupport.No : InteractionSupport.Detect,
+            });
             var total = Stopwatch.StartNew();
             BenchmarkStatistics? statistics = null;
             BvhAnimation[]? testClips = null;
@@ -145,7 +151,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn(), new RemainingTimeColumn())
                 .Start(ctx =>
                 {
-                    var reporter = new SpectreProgress(ctx);
+                    IProgress<BenchmarkProgress>? reporter = Console.IsErrorRedirected ? null : new SpectreProgress(ctx);
                     if (statsPath != null)
                     {
                         statistics = BenchmarkStatistics.Load(statsPath);
@@ -218,14 +224,15 @@ namespace DeltaInterpolator.Cli.Verbs
         private static void PrintTables(BenchmarkReport report)
         {
             PrintTable(report, "L2Q", "global quaternion error", t => t.L2Q, "0.0000");
-            PrintTable(report, "L2P", "global position error, standardised", t => t.L2P, "0.0000");
-            PrintTable(report, "NPSS", "power spectrum similarity of global quaternions", t => t.Npss, "0.00000");
+            PrintTable(report, "L2P", "global position error", t => t.L2P, "0.0000");
+            PrintTable(report, "NPSS", "power spectrum distance", t => t.Npss, "0.00000");
+            AnsiConsole.MarkupLine("Lower is better. Lengths are missing frames; Interp. = SLERP + root LERP, Zero-V = last past pose held.");
         }
 
         private static void PrintTable(BenchmarkReport report, string metric, string meaning, Func<MetricTotals, double> value, string format)
         {
             var table = new Table().Border(TableBorder.Rounded)
-                .Title($"[bold]{metric}[/] ({Markup.Escape(meaning)}; lower is better)");
+                .Title($"[bold]{metric}[/] ({Markup.Escape(meaning)})");
             table.AddColumn(new TableColumn("Lengths"));
             foreach (int n in report.Lengths) table.AddColumn(new TableColumn(n.ToString(CultureInfo.InvariantCulture)).RightAligned());
             for (int m = 0; m < report.MethodIds.Count; m++)
