@@ -10,7 +10,9 @@ using System.Text.Json;
 using DeltaInterpolator.Core.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Metrics;
+using DeltaInterpolator.OnnxRuntime;
 using Spectre.Console;
 
 namespace DeltaInterpolator.Cli.Verbs
@@ -62,6 +64,19 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "OUT",
         };
 
+        private readonly Option<string?> _model = new Option<string?>("--model")
+        {
+            Description = "Also score an exported model (NAME.onnx, contract of Documentation~/model-contract.md) as the \"model\" row, through the same Core in-betweener the Unity component uses (ONNX Runtime backend).",
+            HelpName = "FILE.onnx",
+        };
+
+        private readonly Option<int> _threads = new Option<int>("--threads")
+        {
+            Description = "ONNX Runtime intra-op threads for --model.",
+            HelpName = "N",
+            DefaultValueFactory = _ => 1,
+        };
+
         private readonly Option<string?> _saveStats = new Option<string?>("--save-stats")
         {
             Description = "When the statistics are computed from the training files, save them to this JSON file (reusable with --stats).",
@@ -73,7 +88,8 @@ namespace DeltaInterpolator.Cli.Verbs
         {
             var command = new Command(
                 "benchmark",
-                "Run the official LaFAN1 in-betweening benchmark (Harvey et al. 2020) on the zero-velocity and SLERP baselines.\n" +
+                "Run the official LaFAN1 in-betweening benchmark (Harvey et al. 2020) on the zero-velocity and SLERP baselines\n" +
+                "and, with --model FILE.onnx, an exported Δ-Interpolator model (the \"model\" row).\n" +
                 "Test windows of subject 5 are centred and turned to face +X at the last of 10 past frames; for each transition\n" +
                 "length n the n frames after them are filled from frame 9 and the target frame 10+n, then scored:\n" +
                 "  L2Q  mean distance of global quaternions (all joints' components at once)\n" +
@@ -88,6 +104,8 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_lengths);
             command.Options.Add(_json);
             command.Options.Add(_saveStats);
+            command.Options.Add(_model);
+            command.Options.Add(_threads);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -129,7 +147,17 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"{statsPath}: no such file; expected a statistics JSON such as train_stats_official.json");
             }
 
-            var methods = new IInbetweener[] { new ZeroVelocityBaseline(), new SlerpBaseline() };
+            string? modelPath = parse.GetValue(_model);
+            int threads = parse.GetValue(_threads);
+            if (threads < 0) throw new CliErrors.UsageException($"inbetween benchmark: --threads {threads}; expected 0 (ONNX Runtime's choice) or more");
+            var methods = new List<IInbetweener> { new ZeroVelocityBaseline(), new SlerpBaseline() };
+            using Inbetweener? model = modelPath == null ? null : OnnxRuntimeInbetweener.Load(modelPath, new OnnxRuntimeOptions { IntraOpThreads = threads });
+            if (model != null)
+            {
+                model.DisplayName = "Model (" + Path.GetFileNameWithoutExtension(modelPath) + ")";
+                methods.Add(model);
+            }
+
             // Progress goes to stderr so stdout holds only the results; when stderr is not a terminal
             // (CI logs, pipes) the bars are skipped instead of leaving escape-code residue.
             IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings
@@ -176,6 +204,8 @@ namespace DeltaInterpolator.Cli.Verbs
                     var read = Stopwatch.StartNew();
                     testClips = LafanDataset.ReadAll(testFiles, reporter, "Reading test files");
                     readSeconds = read.Elapsed.TotalSeconds;
+                    // Refuse a model for another skeleton before evaluating anything.
+                    model?.Contract.CheckSkeleton(testClips[0].Skeleton, testFiles[0]);
                     var eval = Stopwatch.StartNew();
                     report = LafanBenchmark.Run(testClips, statistics, methods, options, reporter);
                     evalSeconds = eval.Elapsed.TotalSeconds;
