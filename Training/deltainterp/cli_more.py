@@ -45,8 +45,8 @@ def add_verbs(sub) -> None:
     p = sub.add_parser(
         "export", help="export a checkpoint to ONNX: whole graph + lazy keys/frame graphs",
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        description="Writes OUT (the whole transition), OUT.keys.onnx and OUT.frame.onnx (lazy decoding), "
-                    "opset 15,\nbatch 1, dynamic frame axes, with the contract's constant outputs and "
+        description="Writes OUT (the whole transition) and, beside it, .keys.onnx and .frame.onnx graphs "
+                    "(lazy decoding;\nout/m.onnx → out/m.keys.onnx, out/m.frame.onnx), opset 15, batch 1, dynamic frame axes, with the contract's constant outputs and "
                     "metadata\n(Documentation~/model-contract.md). Fails when a graph holds an operator that "
                     "Sentis 2.x or\nBarracuda cannot import (deltainterp/operators.py), or when the numpy "
                     "evaluation of a written\ngraph differs from torch by more than 1e-5.\n"

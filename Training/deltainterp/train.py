@@ -227,10 +227,12 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             row.update(step=step, lr=lr, seconds=round(time.time() - started, 1))
             new = not log_path.exists()
             with open(log_path, "a", newline="") as f:
-                w = csv.DictWriter(f, fieldnames=fields + sorted(last_val))
+                # Fixed columns: validation metrics live in validation.jsonl. (Appending them here gave
+                # rows with more cells than the header, which was written before the first validation.)
+                w = csv.DictWriter(f, fieldnames=fields)
                 if new:
                     w.writeheader()
-                w.writerow({**row, **last_val} if not new else row)
+                w.writerow(row)
             window_losses.clear()
         if rank == 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             last_val = validation_metrics(model, pack, val_starts, skeleton)

@@ -1,6 +1,7 @@
 """Training: the loss falls, a resumed run equals an uninterrupted one, DDP runs on two processes."""
 from __future__ import annotations
 
+import csv
 import os
 import socket
 import subprocess
@@ -57,7 +58,9 @@ def test_loss_falls(synthetic_pack_path, tmp_path):
     # deterministic (seeded data, one thread, eval-mode loss on fixed batches): measured 3.45 → 3.16;
     # the synthetic motion swings faster than any 39-frame interpolation can follow, hence the modest drop
     assert after < 0.95 * before, f"loss did not fall: {before:.4f} → {after:.4f}"
-    assert (tmp_path / "run" / "log.csv").exists() and (tmp_path / "run" / "validation.jsonl").exists()
+    assert (tmp_path / "run" / "validation.jsonl").exists()
+    rows = list(csv.reader(open(tmp_path / "run" / "log.csv")))
+    assert len(rows) == 3 and all(len(r) == len(rows[0]) for r in rows), "log.csv rows must match its header"
 
 
 def test_resume_equals_uninterrupted_run(synthetic_pack_path, tmp_path):
