@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Dict
+from typing import Any, Dict, Tuple
 
 import torch
 
@@ -60,8 +60,24 @@ def load_checkpoint(path: str | Path) -> LoadedModel:
     skeleton = Skeleton.from_json(state["skeleton"])
     if skeleton.joint_count != config.joints:
         raise ValueError(f"{path}: skeleton has {skeleton.joint_count} joints, the network {config.joints}")
+    train_config = dict(state.get("train_config", {}))
+    fps, description = float(state.get("fps", 30.0)), str(state.get("data_description", ""))
+    if not description:
+        fps, description = _describe_training_data(train_config.get("data"), fps)
     return LoadedModel(model, skeleton, float(state["unit_scale"]), int(state.get("step", 0)),
-                       dict(state.get("train_config", {})), dict(state.get("validation", {})),
+                       train_config, dict(state.get("validation", {})),
                        tuple(state.get("facing_local_axis", DEFAULT_FACING_LOCAL_AXIS)),
                        tuple(state.get("facing_target_axis", DEFAULT_FACING_TARGET_AXIS)),
-                       float(state.get("fps", 30.0)), str(state.get("data_description", "")))
+                       fps, description)
+
+
+def _describe_training_data(pack_path, fps: float) -> Tuple[float, str]:
+    """'LaFAN1 subjects 1-4 (24 files)' and the frame rate, from the training pack when it is at hand
+    (train.py does not store them in the checkpoint)."""
+    description = "LaFAN1 subjects 1-4"
+    if pack_path and Path(pack_path).exists():
+        import numpy as np
+        with np.load(pack_path, allow_pickle=False) as z:
+            description += f" ({len(z['files'])} files)"
+            fps = round(1.0 / float(z["frame_time"]), 3)
+    return fps, description

@@ -151,7 +151,7 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
         "input_delta_mode": cfg.input_delta_mode,
         "training": {"past_frames": list(TRAINING_PAST), "future_frames": list(TRAINING_FUTURE),
                      "missing_frames": list(TRAINING_MISSING), "fps": loaded.fps,
-                     "data": loaded.data_description or "LaFAN1 subjects 1-4", "steps": loaded.step},
+                     "data": loaded.data_description or "LaFAN1 subjects 1-4"},
         "max_frame_index": C.MAX_FRAME_INDEX,
         "architecture": {"width": cfg.width, "blocks": cfg.blocks, "heads": cfg.heads,
                          "embedding_dim": cfg.embedding_dim, "embedding_size": cfg.embedding_size,
