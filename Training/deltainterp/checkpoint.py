@@ -49,7 +49,8 @@ def load_checkpoint(path: str | Path) -> LoadedModel:
     path = Path(path)
     if not path.exists():
         raise FileNotFoundError(f"checkpoint {path} not found (train writes RUN/checkpoint.pt)")
-    state = torch.load(path, map_location="cpu")
+    # Our own files hold RNG states and configs besides tensors; torch ≥ 2.6 would refuse them by default.
+    state = torch.load(path, map_location="cpu", weights_only=False)
     missing = [k for k in REQUIRED_KEYS if k not in state]
     if missing:
         raise ValueError(f"{path} is not a deltainterp checkpoint: it lacks {missing}")

@@ -10,6 +10,7 @@ Each also returns the constant outputs `contract_version`, `joint_count`, `key_f
 """
 from __future__ import annotations
 
+import inspect
 import io
 import json
 import warnings
@@ -162,8 +163,8 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
 def _torch_onnx_export(module: nn.Module, args: Tuple, f, spec: GraphSpec) -> None:
     kwargs = dict(input_names=spec.input_names, output_names=spec.output_names,
                   dynamic_axes=spec.dynamic_axes, opset_version=OPSET, do_constant_folding=True)
-    if int(torch.__version__.split(".")[0]) >= 2:
-        kwargs["dynamo"] = False  # the TorchScript exporter: its output is what the contract describes
+    if "dynamo" in inspect.signature(torch.onnx.export).parameters:
+        kwargs["dynamo"] = False  # torch ≥ 2.5: keep the TorchScript exporter, whose output the contract describes
     torch.onnx.export(module, args, f, **kwargs)
 
 

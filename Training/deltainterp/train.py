@@ -154,7 +154,8 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     step = 0
     ckpt_path = out / "checkpoint.pt"
     if ckpt_path.exists():
-        state = torch.load(ckpt_path, map_location=device)
+        # weights_only=False: the checkpoint holds RNG states (torch ≥ 2.6 defaults to weights_only=True)
+        state = torch.load(ckpt_path, map_location=device, weights_only=False)
         model.load_state_dict(state["model"])
         optimizer.load_state_dict(state["optimizer"])
         step = state["step"]
