@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.InteropServices;
 
 namespace DeltaInterpolator.Core.Metrics
 {
@@ -30,6 +31,7 @@ namespace DeltaInterpolator.Core.Metrics
         private readonly double[] _truthTotal; // features
         private readonly double[] _spectrum;   // n × features, scratch for the prediction's CDF
         private readonly double[] _predictedTotal; // features, scratch
+        private readonly double[] _inverse;        // features, scratch
         private bool _hasTruth;
 
         /// <summary>Creates the metric for sequences of <paramref name="frameCount"/> frames and <paramref name="featureCount"/> features.</summary>
@@ -54,6 +56,7 @@ namespace DeltaInterpolator.Core.Metrics
             _truthTotal = new double[featureCount];
             _spectrum = new double[frameCount * featureCount];
             _predictedTotal = new double[featureCount];
+            _inverse = new double[featureCount];
             _folded = new double[(half + 1) * featureCount];
         }
 
@@ -79,17 +82,28 @@ namespace DeltaInterpolator.Core.Metrics
             if (!_hasTruth) throw new InvalidOperationException("call SetTruth before Accumulate");
             double[] predictedCdf = _spectrum;
             NormalizedCdf(predicted, predictedCdf, _predictedTotal);
-            for (int d = 0; d < _features; d++)
+            int n = _n, D = _features;
+            double[] emd = _predictedTotal; // reused as per-feature EMD accumulator
+            Array.Clear(emd, 0, D);
+            int width = Vector<double>.Count;
+            int vectorEnd = D - D % width;
+            for (int k = 0; k < n; k++)
+            {
+                int row = k * D;
+                int d = 0;
+                for (; d < vectorEnd; d += width)
+                {
+                    (new Vector<double>(emd, d) + Vector.Abs(new Vector<double>(predictedCdf, row + d) - new Vector<double>(_truthCdf, row + d))).CopyTo(emd, d);
+                }
+
+                for (; d < D; d++) emd[d] += Math.Abs(predictedCdf[row + d] - _truthCdf[row + d]);
+            }
+
+            for (int d = 0; d < D; d++)
             {
                 double weight = _truthTotal[d];
                 if (weight == 0) continue;
-                double emd = 0;
-                for (int k = 0; k < _n; k++)
-                {
-                    emd += Math.Abs(predictedCdf[k * _features + d] - _truthCdf[k * _features + d]);
-                }
-
-                weightedEmdSum += emd * weight;
+                weightedEmdSum += emd[d] * weight;
                 weightSum += weight;
             }
         }
@@ -101,6 +115,27 @@ namespace DeltaInterpolator.Core.Metrics
             double emd = 0, weight = 0;
             Accumulate(predicted, ref emd, ref weight);
             return emd / weight;
+        }
+
+        /// <summary>destination[i] += source[i], vectorised.</summary>
+        private static void AddInto(Span<double> destination, ReadOnlySpan<double> source)
+        {
+            int width = Vector<double>.Count;
+            int i = 0;
+            if (destination.Length >= width)
+            {
+                Span<Vector<double>> dv = MemoryMarshal.Cast<double, Vector<double>>(destination);
+                ReadOnlySpan<Vector<double>> sv = MemoryMarshal.Cast<double, Vector<double>>(source.Slice(0, destination.Length));
+                for (int v = 0; v < dv.Length; v++) dv[v] += sv[v];
+                i = dv.Length * width;
+            }
+
+            for (; i < destination.Length; i++) destination[i] += source[i];
+        }
+
+        private static void AddInto(double[] destination, int destinationIndex, double[] source, int sourceIndex, int count)
+        {
+            AddInto(destination.AsSpan(destinationIndex, count), source.AsSpan(sourceIndex, count));
         }
 
         private void NormalizedCdf(ReadOnlySpan<double> series, double[] cdf, double[] totals)
@@ -123,32 +158,36 @@ namespace DeltaInterpolator.Core.Metrics
                 else
                 {
                     ReadOnlySpan<double> b = series.Slice((n - t) * D, D);
-                    for (int d = 0; d < D; d++) dst[d] = a[d] + b[d];
+                    a.CopyTo(dst);
+                    AddInto(dst, b);
                 }
             }
 
-            // Power spectrum for k = 0..n/2 (vectorised over features); the upper half mirrors it.
+            // Power spectrum for k = 0..n/2, vectorised over features with the sum kept in a register;
+            // the upper half mirrors it.
             int width = Vector<double>.Count;
             int vectorEnd = D - D % width;
             for (int k = 0; k <= half; k++)
             {
                 int row = k * D;
-                Array.Clear(cdf, row, D);
-                for (int t = 0; t <= half; t++)
+                int cosRow = k * (half + 1);
+                for (int d = 0; d < vectorEnd; d += width)
                 {
-                    double c = _cos[k * (half + 1) + t];
-                    var cv = new Vector<double>(c);
-                    int src = t * D;
-                    int d = 0;
-                    for (; d < vectorEnd; d += width)
+                    Vector<double> sum = Vector<double>.Zero;
+                    for (int t = 0; t <= half; t++)
                     {
-                        (new Vector<double>(cdf, row + d) + cv * new Vector<double>(folded, src + d)).CopyTo(cdf, row + d);
+                        sum += new Vector<double>(_cos[cosRow + t]) * new Vector<double>(folded, t * D + d);
                     }
 
-                    for (; d < D; d++) cdf[row + d] += c * folded[src + d];
+                    (sum * sum).CopyTo(cdf, row + d);
                 }
 
-                for (int d = 0; d < D; d++) cdf[row + d] *= cdf[row + d];
+                for (int d = vectorEnd; d < D; d++)
+                {
+                    double sum = 0;
+                    for (int t = 0; t <= half; t++) sum += _cos[cosRow + t] * folded[t * D + d];
+                    cdf[row + d] = sum * sum;
+                }
             }
 
             for (int k = half + 1; k < n; k++)
@@ -157,21 +196,22 @@ namespace DeltaInterpolator.Core.Metrics
             }
 
             Array.Clear(totals, 0, D);
-            for (int k = 0; k < n; k++)
-            {
-                for (int d = 0; d < D; d++) totals[d] += cdf[k * D + d];
-            }
+            for (int k = 0; k < n; k++) AddInto(totals, 0, cdf, k * D, D);
 
-            for (int d = 0; d < D; d++)
+            // Normalise by the total (a zero-power feature gets an all-zero CDF) and accumulate over k.
+            double[] inverse = _inverse;
+            for (int d = 0; d < D; d++) inverse[d] = totals[d] > 0 ? 1.0 / totals[d] : 0.0;
+            for (int d = 0; d < D; d++) cdf[d] *= inverse[d];
+            for (int k = 1; k < n; k++)
             {
-                double total = totals[d];
-                double inverse = total > 0 ? 1.0 / total : 0.0;
-                double running = 0;
-                for (int k = 0; k < n; k++)
+                int row = k * D, previous = row - D;
+                int d = 0;
+                for (; d < vectorEnd; d += width)
                 {
-                    running += cdf[k * D + d] * inverse;
-                    cdf[k * D + d] = running;
+                    (new Vector<double>(cdf, previous + d) + new Vector<double>(cdf, row + d) * new Vector<double>(inverse, d)).CopyTo(cdf, row + d);
                 }
+
+                for (; d < D; d++) cdf[row + d] = cdf[previous + d] + cdf[row + d] * inverse[d];
             }
         }
     }

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace DeltaInterpolator.Core.Rotations
 {
@@ -22,6 +23,7 @@ namespace DeltaInterpolator.Core.Rotations
         public readonly double Z;
 
         /// <summary>Creates a quaternion from its (w, x, y, z) components.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public QuaternionD(double w, double x, double y, double z)
         {
             W = w;
@@ -31,12 +33,14 @@ namespace DeltaInterpolator.Core.Rotations
         }
 
         /// <summary>Reads four consecutive values (w, x, y, z) starting at <paramref name="index"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static QuaternionD Read(ReadOnlySpan<double> values, int index)
         {
             return new QuaternionD(values[index], values[index + 1], values[index + 2], values[index + 3]);
         }
 
         /// <summary>Writes (w, x, y, z) to four consecutive values starting at <paramref name="index"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Write(Span<double> values, int index)
         {
             values[index] = W;

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace DeltaInterpolator.Core.Rotations
 {
@@ -11,6 +12,7 @@ namespace DeltaInterpolator.Core.Rotations
     public static class Quaternions
     {
         /// <summary>Hamilton product a ⊗ b: the rotation b followed by a (for column vectors).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static QuaternionD Multiply(QuaternionD a, QuaternionD b)
         {
             return new QuaternionD(
@@ -21,6 +23,7 @@ namespace DeltaInterpolator.Core.Rotations
         }
 
         /// <summary>The conjugate (w, −x, −y, −z); the inverse of a unit quaternion.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static QuaternionD Conjugate(QuaternionD q) => new QuaternionD(q.W, -q.X, -q.Y, -q.Z);
 
         /// <summary>
@@ -41,6 +44,7 @@ namespace DeltaInterpolator.Core.Rotations
         }
 
         /// <summary>Four-dimensional dot product.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Dot(QuaternionD a, QuaternionD b) => a.W * b.W + a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
         /// <summary>q / |q|. The zero quaternion is returned unchanged (there is no direction to keep).</summary>
@@ -60,6 +64,7 @@ namespace DeltaInterpolator.Core.Rotations
         /// Rotates v by the unit quaternion q: v + 2w(u × v) + u × (2 u × v) with u = (x, y, z), the
         /// official code's formula (it does not renormalise q).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector3D Apply(QuaternionD q, Vector3D v)
         {
             double tx = 2.0 * (q.Y * v.Z - q.Z * v.Y);

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace DeltaInterpolator.Core.Rotations
 {
@@ -22,6 +23,7 @@ namespace DeltaInterpolator.Core.Rotations
         public readonly double Z;
 
         /// <summary>Creates a vector.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public Vector3D(double x, double y, double z)
         {
             X = x;
@@ -30,12 +32,14 @@ namespace DeltaInterpolator.Core.Rotations
         }
 
         /// <summary>Reads three consecutive values starting at <paramref name="index"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector3D Read(ReadOnlySpan<double> values, int index)
         {
             return new Vector3D(values[index], values[index + 1], values[index + 2]);
         }
 
         /// <summary>Writes (x, y, z) to three consecutive values starting at <paramref name="index"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Write(Span<double> values, int index)
         {
             values[index] = X;
@@ -47,21 +51,26 @@ namespace DeltaInterpolator.Core.Rotations
         public double Length => Math.Sqrt(X * X + Y * Y + Z * Z);
 
         /// <summary>Dot product.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Dot(Vector3D a, Vector3D b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
         /// <summary>Cross product a × b.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector3D Cross(Vector3D a, Vector3D b)
         {
             return new Vector3D(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
         }
 
         /// <summary>Component-wise sum.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector3D operator +(Vector3D a, Vector3D b) => new Vector3D(a.X + b.X, a.Y + b.Y, a.Z + b.Z);
 
         /// <summary>Component-wise difference.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector3D operator -(Vector3D a, Vector3D b) => new Vector3D(a.X - b.X, a.Y - b.Y, a.Z - b.Z);
 
         /// <summary>Scaling.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector3D operator *(double s, Vector3D a) => new Vector3D(s * a.X, s * a.Y, s * a.Z);
 
         /// <inheritdoc />
