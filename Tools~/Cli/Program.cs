@@ -17,6 +17,7 @@ namespace DeltaInterpolator.Cli
         {
             new BenchmarkVerb(),
             new InfoVerb(),
+            new SpeedVerb(),
         };
 
         public static int Main(string[] args)
