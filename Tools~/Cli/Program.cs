@@ -35,7 +35,9 @@ namespace DeltaInterpolator.Cli
             if (parse.Errors.Count > 0)
             {
                 string verb = parse.CommandResult.Command is RootCommand ? "inbetween" : "inbetween " + parse.CommandResult.Command.Name;
-                string message = parse.Errors[0].Message.TrimEnd('.');
+                // An unknown word explains more than the "required command" error it also causes.
+                System.CommandLine.Parsing.ParseError first = parse.Errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? parse.Errors[0];
+                string message = first.Message.TrimEnd('.');
                 CliErrors.WriteLine($"{verb}: {message}; expected valid arguments (see '{verb} --help')");
                 return CliErrors.BadInput;
             }

@@ -18,8 +18,8 @@ namespace DeltaInterpolator.Core.Bvh
     /// <remarks>
     /// Every malformed input throws <see cref="BvhFormatException"/> naming the file, the line and what
     /// was expected — never an index, format or null-reference error. The motion section is parsed
-    /// straight from the bytes with an exact fast path for short decimals (the form every exporter
-    /// writes), so reading runs at well over 100 MB/s on one core.
+    /// straight from the bytes, without a string per value, with an exact fast path for short decimals
+    /// (the form every exporter writes; the same double that <c>double.Parse</c> gives).
     /// </remarks>
     public static class BvhReader
     {
