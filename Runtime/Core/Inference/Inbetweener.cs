@@ -136,7 +136,9 @@ namespace DeltaInterpolator.Core.Inference
         /// A reusable lazy decoder for transitions of P past keys and n missing frames: it encodes the
         /// keys once per transition (<see cref="LazyTransition.Begin"/>) and decodes frames one at a time
         /// (<see cref="LazyTransition.DecodeFrame"/>), each costing a fraction of a whole transition.
-        /// Owned by this inbetweener (disposed with it).
+        /// Owned by this inbetweener (disposed with it): create one per shape and reuse it for every
+        /// transition of that shape, since each holds its own buffers and backend bindings until
+        /// <see cref="Dispose"/>.
         /// </summary>
         /// <exception cref="InvalidOperationException">The lazy graphs were not loaded.</exception>
         public LazyTransition CreateLazy(int pastFrames, int missingFrames)

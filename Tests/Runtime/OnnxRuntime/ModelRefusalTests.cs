@@ -1,6 +1,5 @@
 using System;
 using System.IO;
-using System.Text;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Skeletons;
@@ -140,13 +139,21 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(message, Does.Not.Contain("\n"));
         }
 
+        /// <summary>One byte per char (the edits are ASCII and control bytes; Encoding.Latin1 is not in .NET Standard 2.1).</summary>
+        private static byte[] Bytes(string s)
+        {
+            var b = new byte[s.Length];
+            for (int i = 0; i < s.Length; i++) b[i] = checked((byte)s[i]);
+            return b;
+        }
+
         /// <summary>A copy of the tiny fixture with same-length replacements (each must occur).</summary>
         private string Patched(string name, params (string From, string To)[] edits)
         {
             byte[] bytes = File.ReadAllBytes(Fixtures.TinyModel);
             foreach ((string from, string to) in edits)
             {
-                byte[] f = Encoding.Latin1.GetBytes(from), t = Encoding.Latin1.GetBytes(to);
+                byte[] f = Bytes(from), t = Bytes(to);
                 Assert.That(t.Length, Is.EqualTo(f.Length), "edits must keep the length");
                 int count = 0;
                 for (int i = 0; i + f.Length <= bytes.Length; i++)
