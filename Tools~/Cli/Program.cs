@@ -22,6 +22,12 @@ namespace DeltaInterpolator.Cli
 
         public static int Main(string[] args)
         {
+            // Tables written to a file or a pipe stay plain text (no colour escape codes).
+            if (Console.IsOutputRedirected)
+            {
+                Spectre.Console.AnsiConsole.Profile.Capabilities.Ansi = false;
+            }
+
             var root = new RootCommand(
                 "inbetween: headless tools of the Δ-Interpolator motion in-betweening package.\n" +
                 "Reads BVH motion capture, runs the official LaFAN1 in-betweening benchmark and (later) neural models.\n\n" +
