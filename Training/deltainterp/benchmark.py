@@ -29,8 +29,9 @@ from . import quaternions
 from .baseline import interpolation_weights, slerp_baseline
 from .bvh import lafan1_files, read_bvh
 from .data import TEST_SUBJECTS, windows
+from .facing import yaw_toward
 from .kinematics import forward_kinematics
-from .localize import facing_yaw, unlocalize
+from .localize import unlocalize
 
 Tensor = torch.Tensor
 
@@ -89,9 +90,9 @@ def normalise_windows(root_positions: Tensor, local_quaternions: Tensor, facing_
     mean_xz = root_positions[:, :, [0, 2]].mean(dim=1, keepdim=True)
     centred = root_positions.clone()
     centred[:, :, [0, 2]] -= mean_xz
-    # `facing_yaw` returns rotation(forward → +X) = the inverse of the official yrot; a zero forward
+    # `yaw_toward` returns rotation(forward → +X) = the inverse of the official yrot; a zero forward
     # (hips pointing straight up) gives the identity instead of the official zero quaternion.
-    yaw = facing_yaw(local_quaternions[:, facing_frame, 0], (0.0, 1.0, 0.0), (1.0, 0.0, 0.0))
+    yaw = yaw_toward(local_quaternions[:, facing_frame, 0], (0.0, 1.0, 0.0), (1.0, 0.0, 0.0))
     yaw_t = yaw[:, None].expand(centred.shape[:-1] + (4,))
     positions = quaternions.apply(yaw_t, centred)
     rotations = local_quaternions.clone()

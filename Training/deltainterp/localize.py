@@ -12,6 +12,7 @@ from typing import Sequence, Tuple
 import torch
 
 from . import quaternions
+from .facing import yaw_toward
 
 Tensor = torch.Tensor
 
@@ -22,24 +23,12 @@ class Localization:
     origin: Tensor  # (B, 3) data units, Y = 0
 
 
-def facing_yaw(root_quaternion: Tensor, facing_local_axis: Sequence[float],
-               facing_target_axis: Sequence[float]) -> Tensor:
-    """The rotation about +Y that turns the root's facing axis (projected on XZ) onto the target axis."""
-    axis = root_quaternion.new_tensor(facing_local_axis).expand(root_quaternion.shape[:-1] + (3,))
-    forward = quaternions.apply(root_quaternion, axis) * root_quaternion.new_tensor([1.0, 0.0, 1.0])
-    length = forward.norm(dim=-1, keepdim=True)
-    target = root_quaternion.new_tensor(facing_target_axis).expand(forward.shape)
-    yaw = quaternions.between(forward / length.clamp_min(1e-12), target)
-    identity = root_quaternion.new_tensor([1.0, 0.0, 0.0, 0.0]).expand(yaw.shape)
-    return torch.where(length < 1e-6, identity, yaw)
-
-
 def localize(root_positions: Tensor, local_quaternions: Tensor, reference_frame: int,
              facing_local_axis: Sequence[float], facing_target_axis: Sequence[float],
              unit_scale: float) -> Tuple[Tensor, Tensor, Localization]:
     """root_positions (B, L, 3) data units, local_quaternions (B, L, J, 4) → the same, localized, with
     positions in model units."""
-    yaw = facing_yaw(local_quaternions[:, reference_frame, 0], facing_local_axis, facing_target_axis)
+    yaw = yaw_toward(local_quaternions[:, reference_frame, 0], facing_local_axis, facing_target_axis)
     origin = root_positions[:, reference_frame] * root_positions.new_tensor([1.0, 0.0, 1.0])
     yaw_t = yaw[:, None].expand(root_positions.shape[:-1] + (4,))
     positions = quaternions.apply(yaw_t, root_positions - origin[:, None]) * unit_scale

@@ -8,6 +8,7 @@ import torch
 
 from deltainterp import quaternions as Q
 from deltainterp import rotation6d
+from deltainterp.facing import yaw_toward
 
 D = torch.float64
 S = math.sqrt(0.5)
@@ -81,6 +82,22 @@ def test_between_turns_forward_onto_plus_x(forward, expected_deg):
     assert math.degrees(Q.angle_between(q, t(1, 0, 0, 0))) == pytest.approx(abs(expected_deg), abs=1e-9)
     if expected_deg == 180.0:  # the antiparallel guard: a half turn about +Y, not the official zero quaternion
         assert torch.allclose(q, t(0, 0, 1, 0))
+
+
+def test_yaw_toward_turns_the_facing_onto_plus_x_about_y():
+    """Mirrors the C# FacingTests: one definition of the facing yaw for localization and the benchmark."""
+    g = torch.Generator().manual_seed(5)
+    roots = Q.normalize(torch.randn(100, 4, dtype=D, generator=g))
+    yaw = yaw_toward(roots, (0.0, 1.0, 0.0), (1.0, 0.0, 0.0))
+    assert torch.all(yaw[:, [1, 3]].abs() <= 1e-15), "a rotation about +Y only"
+    forward = Q.apply(Q.multiply(yaw, roots), t(0, 1, 0).expand(100, 3))
+    assert torch.all(forward[:, 2].abs() < 1e-12) and torch.all(forward[:, 0] > 0)
+    # hips +Y pointing to −X: a half turn, not the official zero quaternion
+    backwards = Q.axis_angle("z", torch.tensor(math.pi / 2, dtype=D))
+    assert torch.allclose(yaw_toward(backwards, (0.0, 1.0, 0.0), (1.0, 0.0, 0.0)), t(0, 0, 1, 0), atol=1e-12)
+    # no horizontal facing (shorter than 1e-6): the identity
+    for up in (t(1, 0, 0, 0), Q.axis_angle("z", torch.tensor(1e-7, dtype=D))):
+        assert torch.equal(yaw_toward(up, (0.0, 1.0, 0.0), (1.0, 0.0, 0.0)), t(1, 0, 0, 0))
 
 
 def test_continuity_fix_uses_the_fixed_previous_frame():

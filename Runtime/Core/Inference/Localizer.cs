@@ -1,4 +1,5 @@
 using System;
+using DeltaInterpolator.Core.Kinematics;
 using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Inference
@@ -41,29 +42,11 @@ namespace DeltaInterpolator.Core.Inference
 
     /// <summary>
     /// Localization of a transition request (Documentation~/model-contract.md, "Localization"; Python
-    /// mirror <c>localize.py</c>). Only the root changes: other joints' rotations are relative to their
+    /// mirror <c>localize.py</c>). The yaw is <see cref="Facing.YawToward"/>. Only the root changes: other joints' rotations are relative to their
     /// parents. Allocation-free.
     /// </summary>
     public static class Localizer
     {
-        /// <summary>
-        /// The rotation about +Y that takes the root's facing (<paramref name="root"/> applied to
-        /// <paramref name="facingLocalAxis"/>, Y zeroed, normalised) onto <paramref name="facingTargetAxis"/>;
-        /// the identity when the facing is (nearly) vertical, a half turn about +Y when it is opposite.
-        /// </summary>
-        public static QuaternionD FacingYaw(QuaternionD root, Vector3D facingLocalAxis, Vector3D facingTargetAxis)
-        {
-            Vector3D forward = Quaternions.Apply(root, facingLocalAxis);
-            forward = new Vector3D(forward.X, 0.0, forward.Z);
-            double length = forward.Length;
-            if (length < 1e-6)
-            {
-                return QuaternionD.Identity;
-            }
-
-            return Quaternions.Between((1.0 / length) * forward, facingTargetAxis, Vector3D.UnitY);
-        }
-
         /// <summary>
         /// Localizes <paramref name="frameCount"/> frames about <paramref name="referenceFrame"/>.
         /// </summary>
@@ -85,7 +68,7 @@ namespace DeltaInterpolator.Core.Inference
             Span<double> localizedRotations)
         {
             int stride = contract.JointCount * 4;
-            QuaternionD yaw = FacingYaw(QuaternionD.Read(localRotations, referenceFrame * stride), contract.FacingLocalAxis, contract.FacingTargetAxis);
+            QuaternionD yaw = Facing.YawToward(QuaternionD.Read(localRotations, referenceFrame * stride), contract.FacingLocalAxis, contract.FacingTargetAxis);
             Vector3D reference = Vector3D.Read(rootPositions, 3 * referenceFrame);
             var localization = new Localization(yaw, new Vector3D(reference.X, 0.0, reference.Z), contract.UnitScale);
             localRotations.Slice(0, frameCount * stride).CopyTo(localizedRotations);

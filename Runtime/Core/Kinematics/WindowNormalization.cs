@@ -36,33 +36,12 @@ namespace DeltaInterpolator.Core.Kinematics
         }
 
         /// <summary>
-        /// The yaw (rotation about +Y) that turns the root's facing at one frame to <paramref name="targetAxis"/>.
-        /// Facing = root rotation applied to <paramref name="localForwardAxis"/>, Y zeroed, normalised.
-        /// When the facing is vertical (no horizontal part) the yaw is the identity; when it is exactly
-        /// opposite to the target it is a half turn about +Y (the official code returns a zero
-        /// quaternion there, which would collapse the whole window).
-        /// </summary>
-        public static QuaternionD FacingYaw(QuaternionD rootRotation, Vector3D localForwardAxis, Vector3D targetAxis)
-        {
-            Vector3D forward = Quaternions.Apply(rootRotation, localForwardAxis);
-            forward = new Vector3D(forward.X, 0.0, forward.Z);
-            double length = forward.Length;
-            if (length < 1e-9)
-            {
-                return QuaternionD.Identity;
-            }
-
-            forward = (1.0 / length) * forward;
-            // quat_between(target, forward) is the turn from the target to the current facing; its
-            // inverse (applied below) brings the facing onto the target.
-            return Quaternions.Between(targetAxis, forward, Vector3D.UnitY);
-        }
-
-        /// <summary>
         /// Turns a window about +Y so that the root faces <paramref name="targetAxis"/> at
-        /// <paramref name="facingFrame"/>: every root rotation becomes yaw⁻¹ ⊗ q and every root position
-        /// yaw⁻¹ · p (about the origin, so centre first as the benchmark does). Other joints' local
-        /// rotations are relative to their parents and do not change.
+        /// <paramref name="facingFrame"/>: with yaw = <see cref="Facing.YawToward"/> of that frame's root
+        /// rotation, every root rotation becomes yaw ⊗ q and every root position yaw · p (about the origin,
+        /// so centre first as the benchmark does). The official code applies the inverse of
+        /// quat_between(target, facing), the same rotation. Other joints' local rotations are relative to
+        /// their parents and do not change.
         /// </summary>
         /// <param name="rootPositions">frames × 3, modified in place.</param>
         /// <param name="localRotations">frames × joints × 4, the root's (joint 0) modified in place.</param>
@@ -71,7 +50,7 @@ namespace DeltaInterpolator.Core.Kinematics
         /// <param name="facingFrame">The frame whose facing is aligned (the benchmark: last past frame, 9).</param>
         /// <param name="localForwardAxis">The root's local forward axis (LaFAN1 hips: +Y).</param>
         /// <param name="targetAxis">The world axis to face (benchmark: +X). Must be horizontal.</param>
-        /// <returns>The yaw that was removed (apply it to undo).</returns>
+        /// <returns>The inverse of the yaw that was applied: apply it to undo.</returns>
         public static QuaternionD FaceAxis(
             Span<double> rootPositions,
             Span<double> localRotations,
@@ -87,15 +66,14 @@ namespace DeltaInterpolator.Core.Kinematics
             }
 
             int stride = jointCount * 4;
-            QuaternionD yaw = FacingYaw(QuaternionD.Read(localRotations, facingFrame * stride), localForwardAxis, targetAxis);
-            QuaternionD inverse = Quaternions.Conjugate(yaw);
+            QuaternionD yaw = Facing.YawToward(QuaternionD.Read(localRotations, facingFrame * stride), localForwardAxis, targetAxis);
             for (int f = 0; f < frameCount; f++)
             {
-                Quaternions.Multiply(inverse, QuaternionD.Read(localRotations, f * stride)).Write(localRotations, f * stride);
-                Quaternions.Apply(inverse, Vector3D.Read(rootPositions, 3 * f)).Write(rootPositions, 3 * f);
+                Quaternions.Multiply(yaw, QuaternionD.Read(localRotations, f * stride)).Write(localRotations, f * stride);
+                Quaternions.Apply(yaw, Vector3D.Read(rootPositions, 3 * f)).Write(rootPositions, 3 * f);
             }
 
-            return yaw;
+            return Quaternions.Conjugate(yaw);
         }
     }
 }

@@ -44,22 +44,6 @@ namespace DeltaInterpolator.Tests.Inference
         }
 
         [Test]
-        public void VerticalFacingGivesTheIdentityYaw()
-        {
-            // Hips' local +Y pointing straight up: no horizontal facing to align.
-            QuaternionD up = QuaternionD.Identity;
-            Assert.That(Localizer.FacingYaw(up, Vector3D.UnitY, Vector3D.UnitX), Is.EqualTo(QuaternionD.Identity));
-        }
-
-        [Test]
-        public void OppositeFacingGivesAHalfTurnAboutY()
-        {
-            QuaternionD facingMinusX = Quaternions.FromAxisAngle(Vector3D.UnitZ, Math.PI / 2); // +Y → −X
-            QuaternionD yaw = Localizer.FacingYaw(facingMinusX, Vector3D.UnitY, Vector3D.UnitX);
-            Assert.That(Math.Abs(yaw.Y), Is.EqualTo(1).Within(1e-12));
-        }
-
-        [Test]
         public void ZeroDeltaDecodesToTheBaseline()
         {
             var zero = new float[6];
