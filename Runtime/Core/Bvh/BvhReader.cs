@@ -533,29 +533,13 @@ namespace DeltaInterpolator.Core.Bvh
                 int exponent = 0;      // decimal exponent applied to mantissa
                 bool anyDigit = false;
                 bool overflowDigits = false;
-                while (i < end && (uint)(d[i] - '0') <= 9)
+                // Integer digits, then (after a '.') fraction digits, by one loop: the first 19
+                // significant digits go into the mantissa and each kept fraction digit moves the point
+                // one place left; past 19, an integer digit still scales by ten and a fraction digit is
+                // dropped.
+                bool fraction = false;
+                while (true)
                 {
-                    anyDigit = true;
-                    if (digits < 19)
-                    {
-                        if (mantissa != 0 || d[i] != (byte)'0')
-                        {
-                            mantissa = mantissa * 10 + (ulong)(d[i] - '0');
-                            digits++;
-                        }
-                    }
-                    else
-                    {
-                        exponent++;
-                        overflowDigits = true;
-                    }
-
-                    i++;
-                }
-
-                if (i < end && d[i] == (byte)'.')
-                {
-                    i++;
                     while (i < end && (uint)(d[i] - '0') <= 9)
                     {
                         anyDigit = true;
@@ -567,15 +551,20 @@ namespace DeltaInterpolator.Core.Bvh
                                 digits++;
                             }
 
-                            exponent--;
+                            if (fraction) exponent--;
                         }
                         else
                         {
+                            if (!fraction) exponent++;
                             overflowDigits = true;
                         }
 
                         i++;
                     }
+
+                    if (fraction || i >= end || d[i] != (byte)'.') break;
+                    fraction = true;
+                    i++;
                 }
 
                 if (!anyDigit)

@@ -47,7 +47,8 @@ namespace DeltaInterpolator.Tests.Bvh
         public void ParsesDecimalsExactlyLikeTheFramework()
         {
             var random = new TestRandom(11);
-            string[] samples = { "-287.536011", "0.000001", "123456789012345678901234", "1.7976931348623157e308", "4.9e-324", "0.1", "-0.030654", "92.468430", "1e-30" };
+            string[] samples = { "-287.536011", "0.000001", "123456789012345678901234", "1.7976931348623157e308", "4.9e-324", "0.1", "-0.030654", "92.468430", "1e-30",
+                "0.12345678901234567890123", "1234567890123456789012.5", "0.000000000000000000001234", ".5", "5." };
             foreach (string s in samples) CheckValue(s);
             for (int i = 0; i < 2000; i++)
             {
