@@ -64,18 +64,12 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "OUT",
         };
 
-        private readonly Option<string?> _model = new Option<string?>("--model")
-        {
-            Description = "Also score an exported model (NAME.onnx, contract of Documentation~/model-contract.md) as the \"model\" row, through the same Core in-betweener the Unity component uses (ONNX Runtime backend).",
-            HelpName = "FILE.onnx",
-        };
-
-        private readonly Option<int> _threads = new Option<int>("--threads")
-        {
-            Description = "ONNX Runtime intra-op threads for --model.",
-            HelpName = "N",
-            DefaultValueFactory = _ => 1,
-        };
+        private readonly ModelOptions _model = new ModelOptions(
+            "benchmark",
+            "Also score an exported model (NAME.onnx, contract of Documentation~/model-contract.md) as the \"model\" row, through the same Core in-betweener the Unity component uses (ONNX Runtime backend).",
+            "ONNX Runtime intra-op threads for --model.",
+            0,
+            "0 (ONNX Runtime's choice) or more");
 
         private readonly Option<string?> _saveStats = new Option<string?>("--save-stats")
         {
@@ -104,8 +98,8 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_lengths);
             command.Options.Add(_json);
             command.Options.Add(_saveStats);
-            command.Options.Add(_model);
-            command.Options.Add(_threads);
+            command.Options.Add(_model.Model);
+            command.Options.Add(_model.Threads);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -147,11 +141,10 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"{statsPath}: no such file; expected a statistics JSON such as train_stats_official.json");
             }
 
-            string? modelPath = parse.GetValue(_model);
-            int threads = parse.GetValue(_threads);
-            if (threads < 0) throw new CliErrors.UsageException($"inbetween benchmark: --threads {threads}; expected 0 (ONNX Runtime's choice) or more");
+            string? modelPath = parse.GetValue(_model.Model);
+            OnnxRuntimeOptions runtimeOptions = _model.RuntimeOptions(parse);
             var methods = new List<IInbetweener> { new ZeroVelocityBaseline(), new SlerpBaseline() };
-            using Inbetweener? model = modelPath == null ? null : OnnxRuntimeInbetweener.Load(modelPath, new OnnxRuntimeOptions { IntraOpThreads = threads });
+            using Inbetweener? model = modelPath == null ? null : OnnxRuntimeInbetweener.Load(modelPath, runtimeOptions);
             if (model != null)
             {
                 model.DisplayName = "Model (" + Path.GetFileNameWithoutExtension(modelPath) + ")";

@@ -25,18 +25,12 @@ namespace DeltaInterpolator.Cli.Verbs
         private static readonly int[] Lengths = { 5, 15, 30 };
         private const int PastFrames = 10;
 
-        private readonly Option<string?> _model = new Option<string?>("--model")
-        {
-            Description = "The exported model (NAME.onnx; NAME.keys.onnx and NAME.frame.onnx beside it time lazy decoding). Default: the shipped Runtime/Models/DeltaInterpolator-LaFAN1.onnx.",
-            HelpName = "FILE.onnx",
-        };
-
-        private readonly Option<int> _threads = new Option<int>("--threads")
-        {
-            Description = "Intra-op threads, for ONNX Runtime and (with --pytorch) torch alike.",
-            HelpName = "N",
-            DefaultValueFactory = _ => 1,
-        };
+        private readonly ModelOptions _model = new ModelOptions(
+            "speed",
+            "The exported model (NAME.onnx; NAME.keys.onnx and NAME.frame.onnx beside it time lazy decoding). Default: the shipped Runtime/Models/DeltaInterpolator-LaFAN1.onnx.",
+            "Intra-op threads, for ONNX Runtime and (with --pytorch) torch alike.",
+            1,
+            "1 or more (the same count is given to torch)");
 
         private readonly Option<bool> _pytorch = new Option<bool>("--pytorch")
         {
@@ -71,8 +65,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 "Each is the median and 95th percentile of many runs after a warm-up. With --pytorch the same request\n" +
                 "is timed in PyTorch eager on the same thread count (same architecture, and the paper's 1024-wide preset).\n" +
                 "Example:\n  inbetween speed --model Tests/Fixtures/tiny-model.onnx --threads 1 --pytorch --json out/speed.json");
-            command.Options.Add(_model);
-            command.Options.Add(_threads);
+            command.Options.Add(_model.Model);
+            command.Options.Add(_model.Threads);
             command.Options.Add(_pytorch);
             command.Options.Add(_repeats);
             command.Options.Add(_json);
@@ -82,19 +76,19 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private int Run(ParseResult parse)
         {
-            int threads = parse.GetValue(_threads);
+            OnnxRuntimeOptions options = _model.RuntimeOptions(parse);
+            int threads = options.IntraOpThreads;
             int repeats = parse.GetValue(_repeats);
             string jsonPath = parse.GetValue(_json)!;
-            if (threads < 1) throw new CliErrors.UsageException($"inbetween speed: --threads {threads}; expected 1 or more (the same count is given to torch)");
             if (repeats < 10) throw new CliErrors.UsageException($"inbetween speed: --repeats {repeats}; expected at least 10");
             string? root = RepositoryRoot();
-            string modelPath = parse.GetValue(_model) ?? (root == null ? "Runtime/Models/DeltaInterpolator-LaFAN1.onnx" : Path.Combine(root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx"));
-            if (parse.GetValue(_model) == null && !File.Exists(modelPath))
+            string? given = parse.GetValue(_model.Model);
+            string modelPath = given ?? (root == null ? "Runtime/Models/DeltaInterpolator-LaFAN1.onnx" : Path.Combine(root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx"));
+            if (given == null && !File.Exists(modelPath))
             {
                 throw new CliErrors.UsageException($"{modelPath}: the shipped model is not there; expected it after export (python3 -m deltainterp export), or pass --model FILE.onnx");
             }
 
-            var options = new OnnxRuntimeOptions { IntraOpThreads = threads };
             using Inbetweener model = OnnxRuntimeInbetweener.Load(modelPath, options);
             ModelContract contract = model.Contract;
             var results = new JsonObject
