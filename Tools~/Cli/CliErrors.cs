@@ -51,12 +51,7 @@ namespace DeltaInterpolator.Cli
                 WriteLine($"{e.Message.TrimEnd('.')}; expected an existing directory");
                 return BadInput;
             }
-            catch (UnauthorizedAccessException e)
-            {
-                WriteLine($"{e.Message.TrimEnd('.')}; expected a readable file");
-                return BadInput;
-            }
-            catch (IOException e)
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 WriteLine($"{e.Message.TrimEnd('.')}; expected a readable file");
                 return BadInput;
