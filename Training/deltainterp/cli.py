@@ -89,6 +89,7 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--batch-size", type=int, default=64, help="windows per network call (default 64)")
     p.add_argument("--threads", type=int, default=1, help="torch intra-op threads (default 1)")
     p.add_argument("--json", required=True, help="where to write the results JSON")
+    p.add_argument("--plot", help="also draw the table as bar charts into this PNG")
 
     p = sub.add_parser(
         "export", help="export a checkpoint to ONNX: whole graph + lazy keys/frame graphs",
@@ -133,6 +134,9 @@ def _run_evaluate_export_fixtures(args) -> int:
         Path(args.json).write_text(json.dumps(report, indent=2) + "\n")
         print(format_table(report))
         print(f"\nwrote {args.json}")
+        if args.plot:
+            from .plots import plot_benchmark
+            print(f"wrote {plot_benchmark(report, args.plot)}")
         return 0
     if args.verb == "export":
         from .checkpoint import load_checkpoint

@@ -38,3 +38,37 @@ def plot_training(run_dir: str | Path) -> Path:
     fig.savefig(out, dpi=110)
     plt.close(fig)
     return out
+
+
+def plot_benchmark(report: dict, out: str | Path) -> Path:
+    """Bars of L2Q, L2P and NPSS per transition length, one colour per method, from an `evaluate` (or
+    C# `benchmark --json`) report — the table at a glance."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    results = report["results"]
+    methods = list(results)
+    lengths = list(next(iter(results.values()))["l2q"])
+    titles = {"l2q": "L2Q (global quaternions)", "l2p": "L2P (global positions, standardised)",
+              "npss": "NPSS (power spectrum)"}
+    labels = {"zerovel": "zero-velocity", "slerp": "SLERP", "model": "Δ-Interpolator (ours)"}
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
+    width = 0.8 / len(methods)
+    for ax, metric in zip(axes, ("l2q", "l2p", "npss")):
+        for i, method in enumerate(methods):
+            values = [results[method][metric][n] for n in lengths]
+            xs = [j + (i - (len(methods) - 1) / 2) * width for j in range(len(lengths))]
+            ax.bar(xs, values, width, label=labels.get(method, method))
+        ax.set_xticks(range(len(lengths)))
+        ax.set_xticklabels([f"n={n}" for n in lengths])
+        ax.set_title(titles[metric])
+    axes[0].legend(fontsize=8)
+    fig.suptitle(f"LaFAN1 benchmark, {report.get('windows', '?')} windows of {report.get('window', '?')} "
+                 f"frames every {report.get('offset', '?')} (lower is better)")
+    fig.tight_layout()
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out
