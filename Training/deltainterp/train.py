@@ -259,6 +259,10 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         except Exception as e:  # plots are a convenience; never lose a run over them
             print(f"(plots skipped: {e})")
     if world > 1:
+        # Meet before tearing down: a rank that destroys its process group (and its DDP reducer) while
+        # the other is still busy (rank 0 draws the plots) hung at exit in about one run in three here.
         import torch.distributed as dist
+        dist.barrier()
+        del net
         dist.destroy_process_group()
     return ckpt_path
