@@ -12,9 +12,10 @@ using NUnit.Framework;
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
-    /// The C# benchmark's model row for the tiny fixture equals Python's
-    /// <c>evaluate --checkpoint Tests/Fixtures/tiny-model.pt</c> (Tests/Fixtures/tiny-model.benchmark.json)
-    /// to 1e-3 at every length. Needs LaFAN1 (skips without it).
+    /// The C# benchmark's model row equals Python's <c>evaluate --checkpoint</c> on the same weights to
+    /// 1e-3 at every length: for the tiny fixture (Tests/Fixtures/tiny-model.benchmark.json, from
+    /// tiny-model.pt) and for the shipped model (Tests/Fixtures/shipped-model.benchmark.json, from the
+    /// checkpoint it was exported from). Needs LaFAN1 (skips without it).
     /// </summary>
     [TestFixture]
     public sealed class BenchmarkParityTests
@@ -24,14 +25,24 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void TinyModelRowEqualsPythonEvaluate()
         {
+            AssertModelRowEqualsPython(Fixtures.TinyModel, Path.Combine(Fixtures.Directory, "tiny-model.benchmark.json"));
+        }
+
+        [Test]
+        public void ShippedModelRowEqualsPythonEvaluate()
+        {
+            AssertModelRowEqualsPython(ShippedModelTests.RequireShippedModel(), Path.Combine(Fixtures.Directory, "shipped-model.benchmark.json"));
+        }
+
+        private static void AssertModelRowEqualsPython(string modelPath, string expectedPath)
+        {
             string data = TestEnvironment.RequireLafan1();
             string stats = Path.Combine(data, "train_stats_official.json");
             if (!File.Exists(stats)) Assert.Ignore($"{stats} not found; skipping the benchmark parity test.");
-            string expectedPath = Path.Combine(Fixtures.Directory, "tiny-model.benchmark.json");
             JsonValue expected = JsonValue.Parse(File.ReadAllText(expectedPath), expectedPath).ExpectMember("results").ExpectMember("model");
 
             BvhAnimation[] clips = LafanDataset.ReadAll(LafanDataset.FindFiles(data, LafanDataset.TestSubjects));
-            using Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel);
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(modelPath);
             var options = new BenchmarkOptions();
             BenchmarkReport report = LafanBenchmark.Run(clips, BenchmarkStatistics.Load(stats), new List<IInbetweener> { model }, options);
 

@@ -19,7 +19,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     [TestFixture]
     public sealed class ShippedModelTests
     {
-        private static string RequireShippedModel()
+        internal static string RequireShippedModel()
         {
             string? dir = AppContext.BaseDirectory;
             while (dir != null)
