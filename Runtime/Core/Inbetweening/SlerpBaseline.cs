@@ -43,28 +43,12 @@ namespace DeltaInterpolator.Core.Inbetweening
 
             for (int joint = 0; joint < j; joint++)
             {
-                QuaternionD q0 = Quaternions.Normalize(QuaternionD.Read(keyRot, (last * j + joint) * 4));
-                QuaternionD q1 = Quaternions.Normalize(QuaternionD.Read(keyRot, (target * j + joint) * 4));
-
-                // Quaternions.Slerp per frame, with the per-pair work (hemisphere, acos) hoisted out of
-                // the frame loop; the arithmetic per weight is the same.
-                double d = Quaternions.Dot(q0, q1);
-                if (d < 0.0)
-                {
-                    d = -d;
-                    q1 = q1.Negated;
-                }
-
-                bool linear = 1.0 - d < 0.01;
-                double omega = linear ? 0.0 : System.Math.Acos(d);
-                double sinOmega = linear ? 1.0 : System.Math.Sin(omega);
+                var pair = new SlerpPair(
+                    Quaternions.Normalize(QuaternionD.Read(keyRot, (last * j + joint) * 4)),
+                    Quaternions.Normalize(QuaternionD.Read(keyRot, (target * j + joint) * 4)));
                 for (int k = 0; k < n; k++)
                 {
-                    double a = Weight(k, n);
-                    double wa = linear ? 1.0 - a : System.Math.Sin((1.0 - a) * omega) / sinOmega;
-                    double wb = linear ? a : System.Math.Sin(a * omega) / sinOmega;
-                    var q = new QuaternionD(
-                        wa * q0.W + wb * q1.W, wa * q0.X + wb * q1.X, wa * q0.Y + wb * q1.Y, wa * q0.Z + wb * q1.Z);
+                    QuaternionD q = pair.At(Weight(k, n));
                     Quaternions.Normalize(q).Write(transition.LocalRotations, (k * j + joint) * 4);
                 }
             }

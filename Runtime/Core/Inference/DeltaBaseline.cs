@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Core.Inference
     public static class DeltaBaseline
     {
         /// <summary>The interpolation weight of missing frame <paramref name="k"/> (0-based) of a gap of <paramref name="n"/>: (k + 1) / (n + 1).</summary>
-        public static double Weight(int k, int n) => (k + 1) / (double)(n + 1);
+        public static double Weight(int k, int n) => Inbetweening.SlerpBaseline.Weight(k, n);
 
         /// <summary>Baseline root position of a missing frame (model units).</summary>
         /// <param name="mode">Output Δ-mode.</param>
@@ -35,13 +35,12 @@ namespace DeltaInterpolator.Core.Inference
         /// is zero (see <see cref="OutputDecoder"/>).
         /// </summary>
         /// <param name="mode">Output Δ-mode.</param>
-        /// <param name="lastUnit">The joint's normalised rotation at the last past key.</param>
-        /// <param name="targetUnit">The joint's normalised rotation at the target.</param>
+        /// <param name="pair">The joint's normalised rotations at the last past key and the target, prepared once per transition.</param>
         /// <param name="weight">a = (f − r) / (n + 1).</param>
-        public static QuaternionD Rotation(OutputDeltaMode mode, QuaternionD lastUnit, QuaternionD targetUnit, double weight)
+        public static QuaternionD Rotation(OutputDeltaMode mode, in SlerpPair pair, double weight)
         {
-            if (mode == OutputDeltaMode.LastPose) return lastUnit;
-            return Quaternions.Normalize(Quaternions.Slerp(lastUnit, targetUnit, weight));
+            if (mode == OutputDeltaMode.LastPose) return pair.From;
+            return Quaternions.Normalize(pair.At(weight));
         }
     }
 }

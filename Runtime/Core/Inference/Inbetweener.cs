@@ -186,13 +186,26 @@ namespace DeltaInterpolator.Core.Inference
             }
         }
 
-        /// <summary>Localizes the keys and builds the inputs of the keys, common to whole and lazy runs.</summary>
-        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, InferenceTensor keyFeatures, InferenceTensor keyFrames, InferenceTensor gap)
+        /// <summary>
+        /// Localizes the keys and builds the inputs of the keys, common to whole and lazy runs; also
+        /// prepares each joint's slerp between the last past key and the target (<paramref name="pairs"/>,
+        /// one per joint) once, for every missing frame's baseline.
+        /// </summary>
+        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, InferenceTensor keyFeatures, InferenceTensor keyFrames, InferenceTensor gap)
         {
             int keys = t.KeyFrameCount;
             int reference = t.PastFrames - 1;
             Localization loc = Localizer.Localize(Contract, t.KeyRootPositions, t.KeyLocalRotations, keys, reference, localRoot, localRotations);
             _features.Build(localRoot, localRotations, keys, reference, keyFeatures.Floats);
+            int jc = Contract.JointCount;
+            int target = t.PastFrames;
+            for (int j = 0; j < jc; j++)
+            {
+                pairs[j] = new SlerpPair(
+                    Quaternions.Normalize(QuaternionD.Read(localRotations, (reference * jc + j) * 4)),
+                    Quaternions.Normalize(QuaternionD.Read(localRotations, (target * jc + j) * 4)));
+            }
+
             FrameIndexBuilder.KeyFrames(t.PastFrames, t.MissingFrames, keyFrames.Longs);
             FrameIndexBuilder.Gap(t.MissingFrames, gap.Longs);
             return loc;
@@ -202,7 +215,7 @@ namespace DeltaInterpolator.Core.Inference
         /// Decodes network output row <paramref name="row"/> into missing frame <paramref name="k"/> of the
         /// transition (world space). Shared by the whole and the lazy paths, so both are identical maths.
         /// </summary>
-        internal void Decode(Transition t, Localization loc, double[] localRoot, double[] localRotations, float[] rootDelta, float[] rotationDelta, int row, int k)
+        internal void Decode(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, float[] rootDelta, float[] rotationDelta, int row, int k)
         {
             int jc = Contract.JointCount;
             int n = t.MissingFrames;
@@ -216,9 +229,7 @@ namespace DeltaInterpolator.Core.Inference
             double[] output = t.LocalRotations;
             for (int j = 0; j < jc; j++)
             {
-                QuaternionD q0 = Quaternions.Normalize(QuaternionD.Read(localRotations, (last * jc + j) * 4));
-                QuaternionD q1 = Quaternions.Normalize(QuaternionD.Read(localRotations, (target * jc + j) * 4));
-                QuaternionD baseRotation = DeltaBaseline.Rotation(mode, q0, q1, a);
+                QuaternionD baseRotation = DeltaBaseline.Rotation(mode, pairs[j], a);
                 QuaternionD q = OutputDecoder.Rotation(mode, baseRotation, new ReadOnlySpan<float>(rotationDelta, (row * jc + j) * 6, 6));
                 if (j == 0) q = loc.UnlocalizeRootRotation(q);
                 q.Write(output, (k * jc + j) * 4);
@@ -227,7 +238,7 @@ namespace DeltaInterpolator.Core.Inference
 
         private void DecodeFrame(Transition t, Workspace w, int row, int k)
         {
-            Decode(t, w.Localization, w.LocalRoot, w.LocalRotations, w.RootDelta.Floats!, w.RotationDelta.Floats!, row, k);
+            Decode(t, w.Localization, w.LocalRoot, w.Pairs, w.RootDelta.Floats!, w.RotationDelta.Floats!, row, k);
         }
 
         private Workspace Prepare(Transition t)
@@ -243,7 +254,7 @@ namespace DeltaInterpolator.Core.Inference
                 _workspaces.Add(key, w);
             }
 
-            w.Localization = LocalizeAndBuild(t, w.LocalRoot, w.LocalRotations, w.KeyFeatures, w.KeyFrames, w.Gap);
+            w.Localization = LocalizeAndBuild(t, w.LocalRoot, w.LocalRotations, w.Pairs, w.KeyFeatures, w.KeyFrames, w.Gap);
             return w;
         }
 
@@ -335,6 +346,7 @@ namespace DeltaInterpolator.Core.Inference
                 int keys = pastFrames + 1;
                 LocalRoot = new double[keys * 3];
                 LocalRotations = new double[keys * jc * 4];
+                Pairs = new SlerpPair[jc];
                 GlobalRotations = new double[missingFrames * jc * 4];
                 KeyFeatures = InferenceTensor.Float(TensorNames.KeyFeatures, 1, keys, owner.Contract.KeyFeatureSize);
                 KeyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, keys);
@@ -354,6 +366,7 @@ namespace DeltaInterpolator.Core.Inference
 
             public double[] LocalRoot { get; }
             public double[] LocalRotations { get; }
+            public SlerpPair[] Pairs { get; }
             public double[] GlobalRotations { get; }
             public InferenceTensor KeyFeatures { get; }
             public InferenceTensor KeyFrames { get; }

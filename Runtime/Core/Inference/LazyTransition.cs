@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Inference
 {
@@ -18,6 +19,7 @@ namespace DeltaInterpolator.Core.Inference
         private readonly Inbetweener _owner;
         private readonly double[] _localRoot;
         private readonly double[] _localRotations;
+        private readonly SlerpPair[] _pairs;
         private readonly InferenceTensor _keyFeatures;
         private readonly InferenceTensor _keyFrames;
         private readonly InferenceTensor _gap;
@@ -38,6 +40,7 @@ namespace DeltaInterpolator.Core.Inference
             MissingFrames = missingFrames;
             _localRoot = new double[k * 3];
             _localRotations = new double[k * c.JointCount * 4];
+            _pairs = new SlerpPair[c.JointCount];
             _keyFeatures = InferenceTensor.Float(TensorNames.KeyFeatures, 1, k, c.KeyFeatureSize);
             _keyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, k);
             _gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
@@ -81,7 +84,7 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             _owner.CheckSkeleton(transition.Skeleton);
-            _localization = _owner.LocalizeAndBuild(transition, _localRoot, _localRotations, _keyFeatures, _keyFrames, _gap);
+            _localization = _owner.LocalizeAndBuild(transition, _localRoot, _localRotations, _pairs, _keyFeatures, _keyFrames, _gap);
             _keysBinding.Run();
             _transition = transition;
         }
@@ -97,7 +100,7 @@ namespace DeltaInterpolator.Core.Inference
             if ((uint)k >= (uint)MissingFrames) throw new ArgumentOutOfRangeException(nameof(k), $"missing frame {k}; expected 0..{MissingFrames - 1}");
             _query.Longs![0] = PastFrames + k;
             _frameBinding.Run();
-            _owner.Decode(t, _localization, _localRoot, _localRotations, _rootDelta.Floats!, _rotationDelta.Floats!, 0, k);
+            _owner.Decode(t, _localization, _localRoot, _pairs, _rootDelta.Floats!, _rotationDelta.Floats!, 0, k);
         }
 
         internal void DisposeBindings()

@@ -179,33 +179,7 @@ namespace DeltaInterpolator.Core.Rotations
         /// (1 − t, t), otherwise sin((1 − t)ω)/sin ω and sin(tω)/sin ω with ω = acos d.
         /// The result is not renormalised; the benchmark normalises its inputs and the result.
         /// </summary>
-        public static QuaternionD Slerp(QuaternionD a, QuaternionD b, double t)
-        {
-            double d = Dot(a, b);
-            if (d < 0.0)
-            {
-                d = -d;
-                b = b.Negated;
-            }
-
-            double wa, wb;
-            if (1.0 - d < 0.01)
-            {
-                // Near-parallel: sin ω → 0 makes the spherical weights ill-conditioned.
-                wa = 1.0 - t;
-                wb = t;
-            }
-            else
-            {
-                double omega = Math.Acos(d);
-                double sinOmega = Math.Sin(omega);
-                wa = Math.Sin((1.0 - t) * omega) / sinOmega;
-                wb = Math.Sin(t * omega) / sinOmega;
-            }
-
-            return new QuaternionD(
-                wa * a.W + wb * b.W, wa * a.X + wb * b.X, wa * a.Y + wb * b.Y, wa * a.Z + wb * b.Z);
-        }
+        public static QuaternionD Slerp(QuaternionD a, QuaternionD b, double t) => new SlerpPair(a, b).At(t);
 
         /// <summary>
         /// The shortest-arc rotation taking direction <paramref name="from"/> to <paramref name="to"/>
