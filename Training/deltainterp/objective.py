@@ -6,7 +6,7 @@ same code path the exporter's golden vectors and the C# runtime follow.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Dict, Optional, Sequence
+from typing import Dict, Optional, Sequence, Tuple
 
 import torch
 
@@ -63,26 +63,33 @@ def make_batch(root_positions: Tensor, local_quaternions: Tensor, layout: KeyLay
     return TransitionBatch(layout, pos, rot, loc, feats, query_features, base_root, base_rot)
 
 
+def _network_inputs(model, batch: TransitionBatch):
+    """The network's inputs for a batch, in the network's precision. The network may run in another
+    precision than the geometry (evaluation and fixtures do the localization and decoding in float64, as
+    the C# runtime does, around a float32 network)."""
+    layout = batch.layout
+    net_dtype = next(getattr(model, "module", model).parameters()).dtype
+    qfeats = None if batch.query_features is None else batch.query_features.to(net_dtype)
+    return (batch.key_features.to(net_dtype), torch.tensor(layout.key_frames), torch.tensor(layout.query_frames),
+            torch.tensor([layout.gap]), qfeats)
+
+
+def query_deltas(model: DeltaInterpolator, batch: TransitionBatch) -> Tuple[Tensor, Tensor]:
+    """The raw network outputs for the query frames (root (B, N, 3), 6D (B, N, J, 6)), network dtype."""
+    return model(*_network_inputs(model, batch))
+
+
 def predict(model: DeltaInterpolator, batch: TransitionBatch, with_keys: bool):
     """Run the network and decode: localized root positions and local quaternions for the query frames
     (and, with_keys, for the key frames, against the reference's first/last interpolated baselines)."""
     layout = batch.layout
-    key_idx = torch.tensor(layout.key_frames)
-    query_idx = torch.tensor(layout.query_frames)
-    gap = torch.tensor([layout.gap])
-    net = getattr(model, "module", model)
-    mode = net.config.output_delta_mode
-    # The network may run in another precision than the geometry (evaluation and fixtures do the
-    # localization and decoding in float64, as the C# runtime does, around a float32 network).
-    net_dtype = next(net.parameters()).dtype
+    mode = getattr(model, "module", model).config.output_delta_mode
     geo_dtype = batch.base_root.dtype
-    feats = batch.key_features.to(net_dtype)
-    qfeats = None if batch.query_features is None else batch.query_features.to(net_dtype)
     if with_keys:
-        (kr, k6), (qr, q6) = model(feats, key_idx, query_idx, gap, qfeats, with_keys=True)
+        (kr, k6), (qr, q6) = model(*_network_inputs(model, batch), with_keys=True)
         kr, k6 = kr.to(geo_dtype), k6.to(geo_dtype)
     else:
-        qr, q6 = model(feats, key_idx, query_idx, gap, qfeats)
+        qr, q6 = query_deltas(model, batch)
     qr, q6 = qr.to(geo_dtype), q6.to(geo_dtype)
     root, rot = decode_outputs(mode, batch.base_root, batch.base_rotations, qr, q6)
     if not with_keys:

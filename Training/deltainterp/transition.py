@@ -13,7 +13,7 @@ import torch
 
 from .checkpoint import LoadedModel
 from .localize import unlocalize
-from .objective import TransitionBatch, make_batch
+from .objective import TransitionBatch, make_batch, query_deltas
 from .sampler import TransitionSampler
 
 Tensor = torch.Tensor
@@ -51,12 +51,8 @@ def run_transition(loaded: LoadedModel, past_roots: Tensor, past_quats: Tensor, 
     cfg = loaded.config
     roots, quats = request_frames(past_roots, past_quats, target_root, target_quats, gap)
     batch = make_batch(roots, quats, layout, skeleton, cfg.output_delta_mode, cfg.input_delta_mode)
-    net_dtype = next(loaded.model.parameters()).dtype
-    qf = None if batch.query_features is None else batch.query_features.to(net_dtype)
     with torch.no_grad():
-        root_delta, rotation_delta = loaded.model(
-            batch.key_features.to(net_dtype), torch.tensor(layout.key_frames), torch.tensor(layout.query_frames),
-            torch.tensor([gap]), qf)
+        root_delta, rotation_delta = query_deltas(loaded.model, batch)
     root, rot = decode_outputs(cfg.output_delta_mode, batch.base_root, batch.base_rotations,
                                root_delta.to(batch.base_root.dtype), rotation_delta.to(batch.base_root.dtype))
     world_root, world_rot = unlocalize(root, rot, batch.localization, loaded.unit_scale)
