@@ -16,6 +16,7 @@ import numpy as np
 import torch
 
 from . import quaternions
+from .benchmark import l2q as benchmark_l2q
 from .data import MotionPack, load_pack, split_windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
@@ -95,8 +96,9 @@ class WindowSource:
 
 def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: np.ndarray,
                        skeleton: SkeletonTensors, gaps=(5, 15, 30), past: int = 10) -> Dict[str, float]:
-    """L2Q and L2P (positions in cm, divided by the per-coordinate std of the validation GT) at each gap,
-    on the held-out tails of the training files; model and SLERP side by side."""
+    """L2Q and L2P at each gap on the held-out tails of the training files, model and SLERP side by side.
+    L2Q is the benchmark's (after hemisphere alignment to the GT); L2P divides by the per-coordinate std of
+    the validation GT instead of the official statistics, so it needs no statistics file."""
     model.eval()
     sampler = TransitionSampler(past=past)
     roots = torch.from_numpy(pack.root_positions)
@@ -118,7 +120,7 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
                     continue
                 pq, pp = forward_kinematics(q, r, skeleton.offsets, skeleton.parents)
                 pq = quaternions.align_hemisphere(pq, gq)
-                l2q = (pq - gq).reshape(*pq.shape[:2], -1).norm(dim=-1).mean().item()
+                l2q = benchmark_l2q(pq, gq)
                 l2p = ((pp - gp).reshape(*pp.shape[:2], -1) / std).norm(dim=-1).mean().item()
                 out[f"{name}_l2q_{n}"] = l2q
                 out[f"{name}_l2p_{n}"] = l2p
