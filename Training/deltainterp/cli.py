@@ -49,6 +49,13 @@ def _train(sub) -> None:
     p.add_argument("--mirror", action="store_true", help="augment with left/right mirrored windows")
     p.add_argument("--random-yaw", action="store_true", help="augment with a random rotation about Y")
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--min-past", type=int, default=10,
+                   help="train over past-key counts P from this to 10 (default 10: the benchmark's layout only)")
+    p.add_argument("--longest-past-share", type=float, default=0.4,
+                   help="with --min-past < 10: share of batches with P = 10; half the rest has P = min-past, "
+                        "the rest spread between (default 0.4)")
+    p.add_argument("--init-from", default="",
+                   help="start a new run from these weights (an exported .onnx or a checkpoint.pt) instead of random")
     p.add_argument("--threads", type=int, default=1,
                    help="torch intra-op threads (default 1: measured fastest on a 2-core CPU, see model card)")
     p.add_argument("--checkpoint-every", type=int, default=250)
@@ -193,7 +200,8 @@ def main(argv: Optional[List[str]] = None) -> int:
                               reconstruction_scale=args.reconstruction_scale, seed=args.seed,
                               mirror=args.mirror, random_yaw=args.random_yaw,
                               checkpoint_every=args.checkpoint_every, validate_every=args.validate_every,
-                              max_minutes=args.max_minutes, threads=args.threads)
+                              max_minutes=args.max_minutes, threads=args.threads, min_past=args.min_past,
+                              longest_past_share=args.longest_past_share, init_from=args.init_from)
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0

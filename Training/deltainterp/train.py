@@ -44,6 +44,9 @@ class TrainConfig:
     validate_every: int = 500
     max_minutes: float = 0.0    # 0 = no wall-clock limit; otherwise stop (with a checkpoint) after it
     threads: int = 0            # 0 = leave torch's default
+    min_past: int = 10          # past keys P drawn on [min_past, 10] (sampler.past_probabilities)
+    longest_past_share: float = 0.4
+    init_from: str = ""         # start from these weights (an exported .onnx or a checkpoint.pt), not random
 
 
 def learning_rate(cfg: TrainConfig, step: int) -> float:
@@ -98,7 +101,9 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
                        skeleton: SkeletonTensors, gaps=(5, 15, 30), past: int = 10) -> Dict[str, float]:
     """L2Q and L2P at each gap on the held-out tails of the training files, model and SLERP side by side.
     L2Q is the benchmark's (after hemisphere alignment to the GT); L2P divides by the per-coordinate std of
-    the validation GT instead of the official statistics, so it needs no statistics file."""
+    the validation GT instead of the official statistics, so it needs no statistics file. With past < 10
+    the network sees only the last `past` of the 10 context frames (same target frame, as the benchmark's
+    --past-frames)."""
     model.eval()
     sampler = TransitionSampler(past=past)
     roots = torch.from_numpy(pack.root_positions)
@@ -107,7 +112,7 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
     with torch.no_grad():
         for n in gaps:
             layout = sampler.layout(n)
-            idx = torch.from_numpy(val_starts)[:, None] + torch.arange(layout.length)[None]
+            idx = torch.from_numpy(val_starts + (10 - past))[:, None] + torch.arange(layout.length)[None]
             batch = make_batch(roots[idx], quats[idx], layout, skeleton, model.config.output_delta_mode,
                                model.config.input_delta_mode)
             q_idx = torch.tensor(layout.query_frames)
@@ -126,6 +131,21 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
                 out[f"{name}_l2p_{n}"] = l2p
     model.train()
     return out
+
+
+VALIDATION_SHORT_PASTS = (1, 5)   # besides P = 10, when training over several past lengths
+
+
+def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
+    """A warm start: the weights of an exported whole graph (.onnx) or of a checkpoint (.pt)."""
+    if str(path).endswith(".onnx"):
+        from .warm_start import load_onnx_weights
+        return load_onnx_weights(path, config)
+    from .checkpoint import load_checkpoint
+    loaded = load_checkpoint(path)
+    if loaded.config.to_dict() != config.to_dict():
+        raise ValueError(f"{path}: architecture {loaded.config.to_dict()}; expected {config.to_dict()}")
+    return loaded.model.state_dict()
 
 
 def _distributed() -> bool:
@@ -151,6 +171,10 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
 
     torch.manual_seed(cfg.seed)  # seed BEFORE building the model: the seed decides the initial weights
     model = DeltaInterpolator(model_cfg).to(device)
+    if cfg.init_from and not (out / "checkpoint.pt").exists():
+        model.load_state_dict(initial_weights(cfg.init_from, model_cfg))
+        if rank == 0 and progress:
+            print(f"initial weights from {cfg.init_from}")
     optimizer = torch.optim.Adam(model.parameters(), lr=learning_rate(cfg, 0))
     rng = np.random.default_rng([cfg.seed, rank])
     step = 0
@@ -170,7 +194,8 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     if world > 1:
         from torch.nn.parallel import DistributedDataParallel
         net = DistributedDataParallel(model, device_ids=[device.index] if device.type == "cuda" else None)
-    source = WindowSource(pack, train_starts, 50, TransitionSampler(), cfg.mirror, cfg.random_yaw, device)
+    sampler = TransitionSampler(min_past=cfg.min_past, longest_past_share=cfg.longest_past_share)
+    source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device)
 
     log_path = out / "log.csv"
     fields = ["step", "lr", "total", "quat", "pos", "key_quat", "key_pos", "seconds"]
@@ -239,6 +264,9 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             window_losses.clear()
         if rank == 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             last_val = validation_metrics(model, pack, val_starts, skeleton)
+            for p in VALIDATION_SHORT_PASTS if cfg.min_past < 10 else ():
+                short = validation_metrics(model, pack, val_starts, skeleton, past=p)
+                last_val.update({f"p{p}_{k}": v for k, v in short.items()})
             with open(out / "validation.jsonl", "a") as f:
                 f.write(json.dumps({"step": step, **last_val}) + "\n")
             if bar is not None:

@@ -1,0 +1,113 @@
+"""Warm start: recover a network's weights from an exported whole graph (`.onnx`).
+
+The exporter folds each Linear weight's transpose into an anonymous initializer (`onnx::MatMul_558`), so
+ONNX names alone do not say which parameter a tensor is. We find out by exporting a network of the same
+architecture whose every parameter is filled with its own index: element [r, c] of parameter i holds
+1000·(i+1) + r, so an initializer of that probe export names its parameter by its values' thousands and
+says whether it was transposed by the axis along which they vary (shape alone cannot tell for square
+matrices). The same
+exporter on the same architecture lays the graph out identically, so the mapping carries over to the real
+file. `load_onnx_weights` checks the result by running both the file and the rebuilt network on the same
+inputs (numpy reference evaluator) and refuses a mismatch.
+"""
+from __future__ import annotations
+
+import io
+import warnings
+from pathlib import Path
+from typing import Dict, Tuple
+
+import numpy as np
+import torch
+
+from . import contract as C
+from .model import DeltaInterpolator, ModelConfig
+
+
+class WarmStartError(ValueError):
+    """The ONNX file does not hold a network of the requested architecture."""
+
+
+def _probe_mapping(config: ModelConfig) -> Dict[str, Tuple[str, bool]]:
+    """initializer name → (parameter name, transposed) for the whole graph of this architecture."""
+    import onnx
+    from onnx import numpy_helper
+    from .export import WholeGraph, _torch_onnx_export, example_inputs, graph_specs
+
+    model = DeltaInterpolator(config).eval()
+    names = [n for n, _ in model.named_parameters()]
+    with torch.no_grad():
+        for i, (_, p) in enumerate(model.named_parameters()):
+            rows = torch.arange(p.shape[0], dtype=p.dtype).reshape(-1, *([1] * (p.dim() - 1)))
+            p.copy_((1000.0 * (i + 1) + rows).expand_as(p))
+    spec = next(s for s in graph_specs(model) if s.kind == "whole")
+    inputs = example_inputs(model, "whole")
+    buffer = io.BytesIO()
+    with torch.no_grad(), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        _torch_onnx_export(WholeGraph(model).eval(), tuple(inputs[n] for n in spec.input_names), buffer, spec)
+    proto = onnx.load_from_string(buffer.getvalue())
+    shapes = dict((n, tuple(p.shape)) for n, p in model.named_parameters())
+    mapping: Dict[str, Tuple[str, bool]] = {}
+    for init in proto.graph.initializer:
+        values = numpy_helper.to_array(init)
+        if values.dtype != np.float32 or values.size == 0:
+            continue
+        index = np.floor(values / 1000.0)
+        first = int(index.flat[0])
+        if not np.all(index == first) or not 1 <= first <= len(names):
+            continue
+        name = names[first - 1]
+        rows = values - 1000.0 * first
+        dims = tuple(values.shape)
+        if dims == shapes[name] and (values.ndim == 1 or np.all(rows == rows[:, :1])):
+            mapping[init.name] = (name, False)
+        elif values.ndim == 2 and dims == shapes[name][::-1] and np.all(rows == rows[:1, :]):
+            mapping[init.name] = (name, True)
+    return mapping
+
+
+def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 1e-5) -> Dict[str, torch.Tensor]:
+    """The state dict of `config`'s network as stored in the whole graph at `path`, checked by running both."""
+    import onnx
+    from onnx import numpy_helper
+    from .export import WholeGraph, example_inputs
+    from .onnx_reference import run_model
+
+    path = Path(path)
+    if not path.is_file():
+        raise WarmStartError(f"{path}: not a file; expected an exported whole graph (.onnx)")
+    try:
+        proto = onnx.load(str(path))
+    except Exception as e:  # a protobuf decode error names no file
+        raise WarmStartError(f"{path}: not an ONNX model ({type(e).__name__}); expected an exported whole graph")
+    mapping = _probe_mapping(config)
+    model = DeltaInterpolator(config).eval()
+    state = {k: v.clone() for k, v in model.state_dict().items()}
+    found = set()
+    for init in proto.graph.initializer:
+        if init.name not in mapping:
+            continue
+        name, transposed = mapping[init.name]
+        values = torch.from_numpy(numpy_helper.to_array(init).copy())
+        values = values.t() if transposed else values
+        if tuple(values.shape) != tuple(state[name].shape):
+            raise WarmStartError(f"{path}: {name} has shape {tuple(values.shape)}; expected {tuple(state[name].shape)}")
+        state[name] = values.contiguous()
+        found.add(name)
+    missing = sorted(set(state) - found)
+    if missing:
+        raise WarmStartError(f"{path}: {len(missing)} parameters not found (e.g. {missing[:3]}); "
+                             f"expected a whole graph of width {config.width}, {config.blocks} blocks")
+    model.load_state_dict(state)
+    for keys, queries, gap in ((11, 5, 5), (2, 17, 17)):
+        feeds = example_inputs(model, "whole", keys, queries, gap, seed=keys + queries)
+        with torch.no_grad():
+            want = WholeGraph(model)(*feeds.values())
+        got = run_model(proto, {k: v.numpy() for k, v in feeds.items()})
+        for i, out in enumerate((C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA)):
+            diff = float(np.abs(got[out] - want[i].numpy()).max())
+            if diff > tolerance:
+                raise WarmStartError(f"{path}: rebuilt network differs from the file by {diff:.3g} in {out}; "
+                                     f"expected ≤ {tolerance} (another architecture?)")
+    return state
