@@ -36,6 +36,11 @@ namespace DeltaInterpolator.Cli
                 WriteLine(e.Message);
                 return BadInput;
             }
+            catch (Core.IO.OutputPathException e)
+            {
+                WriteLine(e.Message);
+                return BadInput;
+            }
             catch (UsageException e)
             {
                 WriteLine(e.Message);

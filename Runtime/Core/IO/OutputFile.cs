@@ -1,0 +1,172 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Text;
+
+namespace DeltaInterpolator.Core.IO
+{
+    /// <summary>
+    /// The one way this package writes a file: check the target before any work (<c>Check</c>), then
+    /// write everything to a temporary file beside it and rename it into place (<see cref="Write"/>), so a
+    /// failing or interrupted write leaves an existing file byte-identical and never leaves half a file.
+    /// </summary>
+    public static class OutputFile
+    {
+        /// <summary>
+        /// Refuses, with <see cref="OutputPathException"/>, a target that cannot or must not be written: a
+        /// folder or other non-file, an existing file without <paramref name="force"/>, one of the
+        /// <paramref name="inputs"/>, or a place whose folder is not writable. Call it before any long work.
+        /// </summary>
+        /// <param name="path">The output path as the user gave it.</param>
+        /// <param name="force">True when the user allowed replacing an existing file (<c>--force</c>).</param>
+        /// <param name="inputs">Every file the same command reads (null entries are ignored).</param>
+        /// <returns>The full path of the target.</returns>
+        public static string Check(string path, bool force, IEnumerable<string?> inputs)
+        {
+            if (string.IsNullOrWhiteSpace(path))
+            {
+                throw new OutputPathException("(empty path)", "no output path given", "expected a file path");
+            }
+
+            string full = Path.GetFullPath(path);
+            foreach (string? input in inputs)
+            {
+                if (input != null && SamePath(full, input))
+                {
+                    throw new OutputPathException(path, "is also an input of this command", "expected a different output path (an output never replaces an input)");
+                }
+            }
+
+            if (Directory.Exists(full))
+            {
+                throw new OutputPathException(path, "is a directory", "expected a file path");
+            }
+
+            if (File.Exists(full) && !force)
+            {
+                throw new OutputPathException(path, "already exists", "expected a new path, or --force to replace it");
+            }
+
+            string folder = NearestExistingFolder(Path.GetDirectoryName(full) ?? full, path);
+            ProbeWritable(folder, path);
+            return full;
+        }
+
+        /// <summary>Same as <see cref="Check(string, bool, IEnumerable{string})"/> with the inputs as arguments.</summary>
+        public static string Check(string path, bool force, params string?[] inputs)
+        {
+            return Check(path, force, (IEnumerable<string?>)inputs);
+        }
+
+        /// <summary>
+        /// Writes the file through <paramref name="write"/> into a temporary file in the target's folder
+        /// (created when missing), flushes it to disk and renames it over the target. When
+        /// <paramref name="write"/> throws, the temporary file is deleted and the target is untouched.
+        /// </summary>
+        public static void Write(string path, Action<Stream> write)
+        {
+            if (write == null) throw new ArgumentNullException(nameof(write));
+            string full = Path.GetFullPath(path);
+            string folder = Path.GetDirectoryName(full) ?? ".";
+            Directory.CreateDirectory(folder);
+            string temporary = Path.Combine(folder, "." + Path.GetFileName(full) + "." + Guid.NewGuid().ToString("N").Substring(0, 8) + ".tmp");
+            try
+            {
+                using (var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16))
+                {
+                    write(stream);
+                    stream.Flush(true);
+                }
+
+                if (File.Exists(full))
+                {
+                    File.Replace(temporary, full, null);
+                }
+                else
+                {
+                    File.Move(temporary, full);
+                }
+            }
+            catch
+            {
+                TryDelete(temporary);
+                throw;
+            }
+        }
+
+        /// <summary>Writes <paramref name="text"/> as UTF-8 (no byte-order mark) through <see cref="Write"/>.</summary>
+        public static void WriteAllText(string path, string text)
+        {
+            byte[] bytes = new UTF8Encoding(false).GetBytes(text);
+            Write(path, s => s.Write(bytes, 0, bytes.Length));
+        }
+
+        /// <summary>Writes <paramref name="bytes"/> through <see cref="Write"/>.</summary>
+        public static void WriteAllBytes(string path, byte[] bytes)
+        {
+            Write(path, s => s.Write(bytes, 0, bytes.Length));
+        }
+
+        private static bool SamePath(string fullOutput, string input)
+        {
+            string fullInput;
+            try
+            {
+                fullInput = Path.GetFullPath(input);
+            }
+            catch (Exception e) when (e is ArgumentException || e is NotSupportedException || e is PathTooLongException)
+            {
+                return false;
+            }
+
+            return string.Equals(fullOutput.TrimEnd(Path.DirectorySeparatorChar), fullInput.TrimEnd(Path.DirectorySeparatorChar), StringComparison.Ordinal);
+        }
+
+        private static string NearestExistingFolder(string folder, string shownPath)
+        {
+            string? current = folder;
+            while (current != null && !Directory.Exists(current))
+            {
+                if (File.Exists(current))
+                {
+                    throw new OutputPathException(shownPath, $"its folder {current} is a file", "expected a path inside a folder");
+                }
+
+                current = Path.GetDirectoryName(current);
+            }
+
+            return current ?? Directory.GetCurrentDirectory();
+        }
+
+        private static void ProbeWritable(string folder, string shownPath)
+        {
+            string probe = Path.Combine(folder, ".inbetween-write-probe-" + Guid.NewGuid().ToString("N").Substring(0, 8));
+            try
+            {
+                using (new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose))
+                {
+                }
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is NotSupportedException)
+            {
+                throw new OutputPathException(shownPath, $"cannot write in the folder {folder} ({e.GetType().Name})", "expected a writable folder");
+            }
+            finally
+            {
+                TryDelete(probe);
+            }
+        }
+
+        private static void TryDelete(string path)
+        {
+            try
+            {
+                if (File.Exists(path)) File.Delete(path);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                // The temporary file is hidden and named as ours; leaving it is better than masking the real error.
+            }
+        }
+    }
+}
