@@ -181,22 +181,45 @@ def interpolation(roots: Tensor, rotations: Tensor, n: int) -> Tuple[Tensor, Ten
 
 
 # -- the model row -------------------------------------------------------------------------------
+PAST_POLICIES = ("feed", "repeat")
+
+
+def context_frames(past_frames: int, n: int, policy: str = "feed") -> List[int]:
+    """Window frames the network sees for a request with only the last `past_frames` of the 10 context
+    frames known: the keys, then the n missing frames, then the target at 10+n.
+
+    `feed` gives the network exactly those P frames (key frame indices 0..P-1, target P+n); `repeat`
+    pads them to 10 by repeating the earliest known frame (indices 0..9, target 10+n), for a model trained
+    with 10 past frames only."""
+    if not 1 <= past_frames <= PAST:
+        raise ValueError(f"--past-frames {past_frames} is outside 1..{PAST}; expected 1 to {PAST}")
+    if policy not in PAST_POLICIES:
+        raise ValueError(f"past policy {policy!r}; expected one of {PAST_POLICIES}")
+    first = PAST - past_frames
+    known = list(range(first, PAST))
+    keys = known if policy == "feed" else [first] * first + known
+    return keys + list(range(PAST, PAST + n + 1))
+
+
 def model_predictions(loaded, roots: Tensor, rotations: Tensor, n: int, batch_size: int = 64,
-                      bar=None) -> Tuple[Tensor, Tensor]:
-    """Run the network on every window: keys = frames 0..9 and 10+n, exactly as a runtime request.
+                      bar=None, past_frames: int = PAST, past_policy: str = "feed") -> Tuple[Tensor, Tensor]:
+    """Run the network on every window: keys = frames 0..9 and 10+n, exactly as a runtime request (or
+    only the last `past_frames` of the context, see `context_frames`).
 
     Returns world (benchmark-frame) root positions (W, n, 3) cm and local quaternions (W, n, J, 4)."""
     from .objective import make_batch, predict
     from .sampler import TransitionSampler
 
-    layout = TransitionSampler(past=PAST).layout(n)
+    frames = torch.tensor(context_frames(past_frames, n, past_policy))
+    past = len(frames) - n - 1
+    layout = TransitionSampler(past=past).layout(n)
     skeleton = loaded.skeleton_tensors(torch.float64)
     cfg = loaded.config
     out_roots, out_rots = [], []
     with torch.no_grad():
         for b in range(0, roots.shape[0], batch_size):
-            r = roots[b:b + batch_size, :layout.length]
-            q = rotations[b:b + batch_size, :layout.length]
+            r = roots[b:b + batch_size][:, frames]
+            q = rotations[b:b + batch_size][:, frames]
             batch = make_batch(r, q, layout, skeleton, cfg.output_delta_mode, cfg.input_delta_mode)
             root, rot, _, _ = predict(loaded.model, batch, with_keys=False)
             root, rot = unlocalize(root, rot, batch.localization, loaded.unit_scale)
@@ -209,8 +232,9 @@ def model_predictions(loaded, roots: Tensor, rotations: Tensor, n: int, batch_si
 
 def run_benchmark(data_dir: str | Path, stats_path: str | Path, window: int = 65, offset: int = 40,
                   lengths: Sequence[int] = DEFAULT_LENGTHS, loaded=None, batch_size: int = 64,
-                  progress: bool = True) -> Dict:
+                  progress: bool = True, past_frames: int = PAST, past_policy: str = "feed") -> Dict:
     """The whole benchmark → the JSON-ready result dictionary (see `evaluate --help`)."""
+    context_frames(past_frames, 1, past_policy)  # refuses a bad P or policy before any work
     for n in lengths:
         if n < 1 or n + PAST + FUTURE > window:
             raise ValueError(f"transition length {n} needs {n + PAST + FUTURE} frames (10 past, n, 10 future "
@@ -237,14 +261,17 @@ def run_benchmark(data_dir: str | Path, stats_path: str | Path, window: int = 65
                 "slerp": interpolation(data.root_positions, data.local_quaternions, n)}
         if loaded is not None:
             rows["model"] = model_predictions(loaded, data.root_positions, data.local_quaternions, n,
-                                              batch_size, bar)
+                                              batch_size, bar, past_frames, past_policy)
         for method, (roots, rots) in rows.items():
             for metric, value in score(rots, roots, gt, offsets, parents, stats).items():
                 results[method][metric][str(n)] = value
     if bar is not None:
         bar.close()
-    return {"windows": data.count, "window": window, "offset": offset, "stats": str(stats_path),
-            "files": sorted(set(data.files)), "lengths": list(lengths), "results": results}
+    report = {"windows": data.count, "window": window, "offset": offset, "stats": str(stats_path),
+              "files": sorted(set(data.files)), "lengths": list(lengths), "results": results}
+    if past_frames != PAST:  # the official layout writes exactly the keys it always wrote
+        report.update(past_frames=past_frames, past_policy=past_policy)
+    return report
 
 
 def format_table(report: Dict) -> str:
@@ -255,6 +282,9 @@ def format_table(report: Dict) -> str:
               "npss": "NPSS (global quaternions)"}
     lines = [f"LaFAN1 benchmark: {report['windows']} windows of {report['window']} frames every "
              f"{report['offset']} ({', '.join(report['files'])})"]
+    if "past_frames" in report:
+        lines.append(f"model sees the last {report['past_frames']} of the 10 past frames "
+                     f"({report['past_policy']}); SLERP and zero-velocity are unchanged")
     for metric in METRICS:
         lines.append("")
         lines.append(f"=== {titles[metric]} ===")

@@ -92,7 +92,14 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--offset", type=int, default=40, help="frames between window starts (official: 40)")
     p.add_argument("--lengths", type=_lengths, default=[5, 15, 30, 45],
                    help="transition lengths n, comma-separated (default 5,15,30,45)")
-    p.add_argument("--checkpoint", help="a checkpoint.pt from `train` (or tiny-model.pt) to score as 'model'")
+    p.add_argument("--checkpoint", help="a checkpoint.pt from `train` (or tiny-model.pt), or an exported whole "
+                                        "graph .onnx, to score as 'model'")
+    p.add_argument("--past-frames", type=int, default=10,
+                   help="the model sees only the last P of the 10 past frames (same windows and target frame; "
+                        "SLERP and zero-velocity are unchanged). Default 10, the official layout")
+    p.add_argument("--past-policy", choices=["feed", "repeat"], default="feed",
+                   help="with --past-frames < 10: feed the P frames as they are (key indices 0..P-1), or repeat "
+                        "the earliest to fill 10 (for models trained with 10 past frames only)")
     p.add_argument("--batch-size", type=int, default=64, help="windows per network call (default 64)")
     p.add_argument("--threads", type=int, default=1, help="torch intra-op threads (default 1)")
     p.add_argument("--json", required=True, help="where to write the results JSON")
@@ -131,9 +138,13 @@ def _run_evaluate_export_fixtures(args) -> int:
         from .benchmark import format_table, run_benchmark
         from .checkpoint import load_checkpoint
         torch.set_num_threads(args.threads)
-        loaded = load_checkpoint(args.checkpoint) if args.checkpoint else None
+        if args.checkpoint and args.checkpoint.endswith(".onnx"):
+            from .warm_start import load_exported_model
+            loaded = load_exported_model(args.checkpoint)
+        else:
+            loaded = load_checkpoint(args.checkpoint) if args.checkpoint else None
         report = run_benchmark(args.data, args.stats, args.window, args.offset, args.lengths, loaded,
-                               args.batch_size)
+                               args.batch_size, past_frames=args.past_frames, past_policy=args.past_policy)
         if loaded is not None:
             report["checkpoint"] = {"path": args.checkpoint, "step": loaded.step,
                                     "parameters": loaded.model.parameter_count(), **loaded.config.to_dict()}

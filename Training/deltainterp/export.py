@@ -30,7 +30,8 @@ from .operators import check_operators
 Tensor = torch.Tensor
 OPSET = 15
 
-TRAINING_PAST = (10, 10)      # TransitionSampler defaults used by `train` (past keys, gap range)
+TRAINING_PAST = (10, 10)      # TransitionSampler defaults used by `train` (past keys, gap range); the
+                              # lower end of the past range comes from the run's --min-past
 TRAINING_FUTURE = (1, 1)
 TRAINING_MISSING = (5, 39)
 
@@ -150,7 +151,8 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
         "quaternion_order": "wxyz",
         "output_delta_mode": cfg.output_delta_mode,
         "input_delta_mode": cfg.input_delta_mode,
-        "training": {"past_frames": list(TRAINING_PAST), "future_frames": list(TRAINING_FUTURE),
+        "training": {"past_frames": [int(loaded.train_config.get("min_past", TRAINING_PAST[0])), TRAINING_PAST[1]],
+                     "future_frames": list(TRAINING_FUTURE),
                      "missing_frames": list(TRAINING_MISSING), "fps": loaded.fps,
                      "data": loaded.data_description or "LaFAN1 subjects 1-4"},
         "max_frame_index": C.MAX_FRAME_INDEX,

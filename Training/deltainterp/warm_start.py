@@ -28,8 +28,12 @@ class WarmStartError(ValueError):
     """The ONNX file does not hold a network of the requested architecture."""
 
 
-def _probe_mapping(config: ModelConfig) -> Dict[str, Tuple[str, bool]]:
-    """initializer name → (parameter name, transposed) for the whole graph of this architecture."""
+def _probe_mapping(config: ModelConfig) -> Dict[Tuple[str, int], Tuple[str, bool]]:
+    """(node name, input position) → (parameter name, transposed) for the whole graph of this architecture.
+
+    Keyed by where a tensor is USED rather than by initializer name: the exporter merges initializers
+    with equal values (an untrained network's LayerNorm gains are all ones), so one initializer of a
+    real file may stand for several parameters, but every use still names its own."""
     import onnx
     from onnx import numpy_helper
     from .export import WholeGraph, _torch_onnx_export, example_inputs, graph_specs
@@ -48,7 +52,7 @@ def _probe_mapping(config: ModelConfig) -> Dict[str, Tuple[str, bool]]:
         _torch_onnx_export(WholeGraph(model).eval(), tuple(inputs[n] for n in spec.input_names), buffer, spec)
     proto = onnx.load_from_string(buffer.getvalue())
     shapes = dict((n, tuple(p.shape)) for n, p in model.named_parameters())
-    mapping: Dict[str, Tuple[str, bool]] = {}
+    by_initializer: Dict[str, Tuple[str, bool]] = {}
     for init in proto.graph.initializer:
         values = numpy_helper.to_array(init)
         if values.dtype != np.float32 or values.size == 0:
@@ -61,10 +65,13 @@ def _probe_mapping(config: ModelConfig) -> Dict[str, Tuple[str, bool]]:
         rows = values - 1000.0 * first
         dims = tuple(values.shape)
         if dims == shapes[name] and (values.ndim == 1 or np.all(rows == rows[:, :1])):
-            mapping[init.name] = (name, False)
+            by_initializer[init.name] = (name, False)
         elif values.ndim == 2 and dims == shapes[name][::-1] and np.all(rows == rows[:1, :]):
-            mapping[init.name] = (name, True)
-    return mapping
+            by_initializer[init.name] = (name, True)
+    # Only scoped nodes ("/model/blocks.0/mlp/layers.0/MatMul"): their names come from the module tree and
+    # are stable; numbered ones (Identity_12) shift when the exporter merges initializers.
+    return {(node.name, i): by_initializer[x] for node in proto.graph.node if node.name.startswith("/")
+            for i, x in enumerate(node.input) if x in by_initializer}
 
 
 def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 1e-5) -> Dict[str, torch.Tensor]:
@@ -85,16 +92,22 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
     model = DeltaInterpolator(config).eval()
     state = {k: v.clone() for k, v in model.state_dict().items()}
     found = set()
-    for init in proto.graph.initializer:
-        if init.name not in mapping:
-            continue
-        name, transposed = mapping[init.name]
-        values = torch.from_numpy(numpy_helper.to_array(init).copy())
-        values = values.t() if transposed else values
-        if tuple(values.shape) != tuple(state[name].shape):
-            raise WarmStartError(f"{path}: {name} has shape {tuple(values.shape)}; expected {tuple(state[name].shape)}")
-        state[name] = values.contiguous()
-        found.add(name)
+    initializers = {init.name: init for init in proto.graph.initializer}
+    aliases = {node.output[0]: node.input[0] for node in proto.graph.node if node.op_type == "Identity"}
+    for node in proto.graph.node:
+        for position, tensor_name in enumerate(node.input):
+            while tensor_name in aliases and tensor_name not in initializers:  # merged weights pass an Identity
+                tensor_name = aliases[tensor_name]
+            if (node.name, position) not in mapping or tensor_name not in initializers:
+                continue
+            name, transposed = mapping[(node.name, position)]
+            values = torch.from_numpy(numpy_helper.to_array(initializers[tensor_name]).copy())
+            values = values.t() if transposed else values
+            if tuple(values.shape) != tuple(state[name].shape):
+                raise WarmStartError(f"{path}: {name} has shape {tuple(values.shape)}; "
+                                     f"expected {tuple(state[name].shape)}")
+            state[name] = values.contiguous()
+            found.add(name)
     missing = sorted(set(state) - found)
     if missing:
         raise WarmStartError(f"{path}: {len(missing)} parameters not found (e.g. {missing[:3]}); "
@@ -111,3 +124,36 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
                 raise WarmStartError(f"{path}: rebuilt network differs from the file by {diff:.3g} in {out}; "
                                      f"expected ≤ {tolerance} (another architecture?)")
     return state
+
+
+def load_exported_model(path: str | Path):
+    """An exported whole graph → a `LoadedModel` (network, skeleton, unit scale, axes from its metadata),
+    so `evaluate` can score a shipped `.onnx` through the same torch path as a checkpoint."""
+    import json
+
+    import onnx
+    from .checkpoint import LoadedModel
+    from .skeleton import Skeleton
+
+    path = Path(path)
+    try:
+        proto = onnx.load(str(path), load_external_data=False)
+    except Exception as e:
+        raise WarmStartError(f"{path}: not an ONNX model ({type(e).__name__}); expected an exported whole graph")
+    entries = {p.key: p.value for p in proto.metadata_props}
+    if "deltainterp" not in entries:
+        raise WarmStartError(f"{path}: no 'deltainterp' metadata; expected a graph written by `export`")
+    meta = json.loads(entries["deltainterp"])
+    skeleton = Skeleton.from_json(meta["skeleton"])
+    arch = meta["architecture"]
+    config = ModelConfig(joints=skeleton.joint_count, width=arch["width"], blocks=arch["blocks"], heads=arch["heads"],
+                         embedding_dim=arch["embedding_dim"], embedding_size=arch["embedding_size"],
+                         output_delta_mode=meta["output_delta_mode"], input_delta_mode=meta["input_delta_mode"])
+    model = DeltaInterpolator(config)
+    model.load_state_dict(load_onnx_weights(path, config))
+    model.eval()
+    training = meta.get("training", {})
+    return LoadedModel(model, skeleton, float(meta["unit_scale"]), 0,
+                       {"min_past": int(training.get("past_frames", [10, 10])[0])}, {},
+                       tuple(meta["facing_local_axis"]), tuple(meta["facing_target_axis"]),
+                       float(training.get("fps", 30.0)), str(training.get("data", "")))

@@ -192,3 +192,33 @@ def test_statistics_validation(tmp_path):
 def test_transition_longer_than_the_window_is_refused(lafan1_dir):
     with pytest.raises(ValueError, match="needs 66 frames"):
         run_benchmark(lafan1_dir, STATS, lengths=(46,), progress=False)
+
+
+@pytest.mark.parametrize("past, policy, expected", [
+    (10, "feed", list(range(10)) + [10, 11, 12, 13, 14, 15]),
+    (1, "feed", [9, 10, 11, 12, 13, 14, 15]),
+    (3, "repeat", [7] * 7 + [7, 8, 9] + [10, 11, 12, 13, 14, 15]),
+])
+def test_context_frames_keep_the_window_and_target(past, policy, expected):
+    from deltainterp.benchmark import context_frames
+    assert context_frames(past, 5, policy) == expected
+
+
+def test_context_frames_refuse_bad_requests():
+    from deltainterp.benchmark import context_frames
+    with pytest.raises(ValueError, match="past-frames 11"):
+        context_frames(11, 5)
+    with pytest.raises(ValueError, match="policy"):
+        context_frames(5, 5, "guess")
+
+
+def test_fewer_past_frames_change_only_the_model_row(lafan1_dir):
+    from conftest import REPO
+    from deltainterp.checkpoint import load_checkpoint
+    loaded = load_checkpoint(REPO / "Tests" / "Fixtures" / "tiny-model.pt")
+    full = run_benchmark(lafan1_dir, STATS, lengths=(5,), loaded=loaded, progress=False)
+    short = run_benchmark(lafan1_dir, STATS, lengths=(5,), loaded=loaded, progress=False, past_frames=3)
+    assert short["past_frames"] == 3 and "past_frames" not in full
+    for method in ("zerovel", "slerp"):
+        assert short["results"][method] == full["results"][method]
+    assert short["results"]["model"]["l2p"]["5"] != full["results"]["model"]["l2p"]["5"]

@@ -39,3 +39,32 @@ def test_layout(past, gap):
 def test_invalid_ranges_are_refused():
     with pytest.raises(ValueError):
         TransitionSampler(min_gap=10, max_gap=5)
+
+
+def test_past_lengths_follow_their_distribution():
+    sampler = TransitionSampler(min_past=1, longest_past_share=0.4)
+    assert sampler.past_probabilities.sum() == pytest.approx(1.0)
+    assert sampler.past_probabilities[-1] == pytest.approx(0.4) and sampler.past_probabilities[0] == pytest.approx(0.3)
+    assert np.allclose(sampler.past_probabilities[1:-1], 0.3 / 8)
+    rng = np.random.default_rng(1)
+    layouts = [sampler.sample(rng) for _ in range(8000)]
+    pasts = np.array([layout.past for layout in layouts])
+    assert pasts.min() == 1 and pasts.max() == 10
+    assert (pasts == 10).mean() == pytest.approx(0.4, abs=0.02)
+    assert (pasts == 1).mean() == pytest.approx(0.3, abs=0.02)
+    for layout in layouts[:50]:  # the layout of a short past is the contract's: keys 0..P-1, target P+n
+        assert layout.key_frames == list(range(layout.past)) + [layout.past + layout.gap]
+
+
+def test_a_single_past_length_draws_as_before():
+    """Runs with the benchmark's layout only keep their RNG stream (resume and old runs stay exact)."""
+    a, b = np.random.default_rng(3), np.random.default_rng(3)
+    old = [int(b.choice(np.arange(5, 40), p=TransitionSampler().probabilities)) for _ in range(100)]
+    assert [TransitionSampler().sample(a).gap for _ in range(100)] == old
+
+
+def test_past_range_is_checked():
+    with pytest.raises(ValueError):
+        TransitionSampler(past=10, min_past=0)
+    with pytest.raises(ValueError):
+        TransitionSampler(past=5, min_past=6)
