@@ -142,5 +142,6 @@ def subject_of(path: str | Path) -> int:
 def lafan1_files(data_dir: str | Path, subjects: Tuple[int, ...]) -> List[Path]:
     files = sorted(p for p in Path(data_dir).glob("*.bvh") if subject_of(p) in subjects)
     if not files:
-        raise FileNotFoundError(f"no LaFAN1 BVH files of subjects {subjects} in {data_dir}")
+        raise FileNotFoundError(f"{data_dir}: no LaFAN1 BVH files of subjects {subjects}; expected a folder of "
+                                "<theme><take>_subject<k>.bvh files (LaFAN1)")
     return files
