@@ -35,6 +35,8 @@ class MotionPack:
 
 def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN_SUBJECTS,
             progress: bool = True) -> MotionPack:
+    from .benchmark import load_statistics
+    statistics = load_statistics(stats) if stats else None  # a bad statistics file fails before any BVH is read
     files = lafan1_files(data_dir, tuple(subjects))
     roots, quats, names = [], [], []
     skeleton = None
@@ -55,10 +57,10 @@ def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN
     assert skeleton is not None
     if stats:
         # The official benchmark computes positions with the training offsets of its statistics file.
-        s = json.loads(Path(stats).read_text())
-        offsets = np.zeros((skeleton.joint_count, 3))
-        offsets[1:] = np.asarray(s["offsets"], dtype=np.float64).reshape(-1, 3)
-        skeleton = with_offsets(skeleton, offsets)
+        if len(statistics.offsets) != skeleton.joint_count:
+            raise ValueError(f"{stats}: offsets for {len(statistics.offsets)} joints; expected the BVH files' "
+                             f"{skeleton.joint_count}")
+        skeleton = with_offsets(skeleton, statistics.offsets)
     starts = np.cumsum([0] + [len(r) for r in roots])
     pack = MotionPack(skeleton, names, starts, np.concatenate(roots), np.concatenate(quats), frame_time)
     save_pack(pack, out)
