@@ -54,7 +54,7 @@ class Statistics:
 def load_statistics(path: str | Path) -> Statistics:
     path = Path(path)
     if not path.exists():
-        raise FileNotFoundError(f"statistics file {path} not found (LaFAN1: train_stats_official.json)")
+        raise FileNotFoundError(f"{path}: statistics file not found; expected LaFAN1's train_stats_official.json")
     try:
         s = json.loads(path.read_text())
     except ValueError as e:  # not JSON, or not UTF-8: name the file

@@ -35,7 +35,7 @@ def _train(sub) -> None:
                                    "These four files are the run's own: they are replaced (through a temporary "
                                    "file) as the run goes, without --force. OUT must be new, empty or a run "
                                    "folder; resuming refuses other settings or another architecture (naming "
-                                   "the difference) and warns about another --steps. Example: "
+                                   "the difference) and warns about another --steps. Example (after `prepare`): "
                                    "PYTHONPATH=Training python3 -m deltainterp train --preset tiny --steps 20 "
                                    "--out Training/runs/try")
     p.add_argument("--data", default=DEFAULT_PACK, help="pack written by `prepare`")
@@ -174,8 +174,7 @@ def _run_evaluate_export_fixtures(args) -> int:
         return 0
     if args.verb == "export":
         from .checkpoint import load_checkpoint
-        from .export import export_model
-        from .export import graph_paths
+        from .export import export_model, graph_paths
         torch.set_num_threads(1)
         for path in graph_paths(args.out).values():
             safe_output.check(path, args.force, [args.checkpoint])

@@ -192,6 +192,30 @@ def architecture_differences(saved: Dict, config: ModelConfig) -> List[str]:
             if saved.get(key) != now.get(key)]
 
 
+def _record_step(line: str, csv_row: bool) -> Optional[int]:
+    try:
+        return int(line.split(",", 1)[0]) if csv_row else int(json.loads(line)["step"])
+    except (ValueError, KeyError, TypeError):
+        return None
+
+
+def trim_run_logs(out: Path, step: int) -> int:
+    """On resume: drop the log.csv rows and validation.jsonl records of steps after the checkpoint (a run
+    stopped between a log and its next checkpoint redoes those steps; without this they would appear twice).
+    Returns how many were dropped. Lines that are not records (the header) stay."""
+    dropped = 0
+    for name, csv_row in (("log.csv", True), ("validation.jsonl", False)):
+        path = out / name
+        if not path.is_file():
+            continue
+        lines = path.read_text().splitlines(keepends=True)
+        kept = [line for line in lines if (_record_step(line, csv_row) or 0) <= step]
+        if len(kept) != len(lines):
+            dropped += len(lines) - len(kept)
+            safe_output.write_text(path, "".join(kept))
+    return dropped
+
+
 def _distributed() -> bool:
     return int(os.environ.get("WORLD_SIZE", "1")) > 1
 
@@ -268,8 +292,11 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             raise CheckpointError(ckpt_path, f"cannot be resumed ({type(e).__name__}: {detail})",
                                   "expected a checkpoint `train` wrote with the same settings")
         del state
+        dropped = trim_run_logs(out, step) if rank == 0 else 0
         if rank == 0 and progress:
             print(f"resumed from {ckpt_path} at step {step}")
+            if dropped:
+                print(f"dropped {dropped} log record(s) written after the checkpoint's step {step} (they are redone)")
             if step >= cfg.steps:
                 print(f"{ckpt_path}: the run is complete at step {step} (--steps {cfg.steps}); nothing to train")
     net = model

@@ -323,8 +323,12 @@ def test_prepare_checks_its_output_before_reading_any_bvh(tmp_path, capsys):
         code, _, err = run_cli(capsys, ["prepare", "--data", tmp_path / "nodata", "--out", *extra])
         assert "nodata" not in assert_one_line_error(code, err, path)
     assert existing.read_bytes() == b"old pack"
-    code, _, err = run_cli(capsys, ["prepare", "--data", tmp_path / "nodata", "--out", tmp_path / "new.npz"])
+    code, _, err = run_cli(capsys, ["prepare", "--data", tmp_path / "nodata", "--stats", "", "--out",
+                                    tmp_path / "new.npz"])
     assert_one_line_error(code, err, tmp_path / "nodata")  # a missing data folder: one line too
+    code, _, err = run_cli(capsys, ["prepare", "--data", tmp_path / "nodata", "--stats", tmp_path / "none.json",
+                                    "--out", tmp_path / "new.npz"])
+    assert_one_line_error(code, err, tmp_path / "none.json")  # the statistics are read first
 
 
 def test_prepare_pack_write_interrupted_leaves_the_old_pack(synthetic_pack_path, tmp_path, failing_rename):
@@ -613,3 +617,20 @@ def test_a_bad_statistics_file_gives_one_line_naming_it(content, tmp_path, capsy
             ["--json", tmp_path / "b.json"] if verb == "evaluate" else ["--out", tmp_path / "p.npz"])
         code, _, err = run_cli(capsys, argv)
         assert_one_line_error(code, err, stats)
+
+
+def test_resuming_drops_log_records_written_after_the_checkpoint(synthetic_pack_path, tmp_path, capsys):
+    """A run stopped between a log row and its next checkpoint redoes those steps: their records must not
+    appear twice."""
+    run = tmp_path / "run"
+    train(run_config(synthetic_pack_path, run, 50, validate_every=50), progress=False)
+    log, val = run / "log.csv", run / "validation.jsonl"
+    log.write_text(log.read_text() + "100,0.001,9,9,9,9,9,9.0\n")  # records of steps the checkpoint lacks
+    val.write_text(val.read_text() + json.dumps({"step": 100, "model_l2q_5": 9.0}) + "\n")
+    code, out, err = run_cli(capsys, train_argv(synthetic_pack_path, run, 100, "--lr", "0.003", "--warmup", 2,
+                                                "--decay-at", 1.0, "--validate-every", 50))
+    assert code == 0, err
+    assert "dropped 2 log record(s)" in out
+    steps = [int(line.split(",")[0]) for line in log.read_text().splitlines()[1:]]
+    assert steps == [50, 100] and "9,9,9" not in log.read_text()
+    assert [json.loads(line)["step"] for line in val.read_text().splitlines()] == [50, 100]
