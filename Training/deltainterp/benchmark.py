@@ -54,11 +54,15 @@ class Statistics:
 def load_statistics(path: str | Path) -> Statistics:
     path = Path(path)
     if not path.exists():
-        raise FileNotFoundError(f"statistics file {path} not found (LaFAN1: train_stats_official.json)")
-    s = json.loads(path.read_text())
+        raise FileNotFoundError(f"{path}: statistics file not found; expected LaFAN1's train_stats_official.json")
+    try:
+        s = json.loads(path.read_text())
+    except ValueError as e:  # not JSON, or not UTF-8: name the file
+        raise ValueError(f"{path}: not JSON ({e}); expected LaFAN1's train_stats_official.json") from None
     for key in ("x_mean", "x_std", "offsets"):
-        if key not in s:
-            raise ValueError(f"{path}: missing '{key}'")
+        if not isinstance(s, dict) or key not in s:
+            raise ValueError(f"{path}: missing '{key}'; expected LaFAN1's train_stats_official.json "
+                             "(x_mean, x_std, offsets)")
     mean = np.asarray(s["x_mean"], dtype=np.float64).reshape(-1)
     std = np.asarray(s["x_std"], dtype=np.float64).reshape(-1)
     rest = np.asarray(s["offsets"], dtype=np.float64).reshape(-1, 3)

@@ -38,6 +38,17 @@ _CHANNELS = {"xposition", "yposition", "zposition", "xrotation", "yrotation", "z
 
 
 def read_bvh(path: str | Path, fix_continuity: bool = True) -> Motion:
+    try:
+        return _read_bvh(path, fix_continuity)
+    except BvhFormatError:
+        raise
+    except (ValueError, IndexError, UnicodeDecodeError) as e:  # float('x'), a short line, bytes not UTF-8
+        detail = " ".join(str(e).split())[:120]
+        raise ValueError(f"{path}: not a readable BVH file ({type(e).__name__}: {detail}); "
+                         "expected a BVH motion file (HIERARCHY, MOTION, one frame of numbers per line)") from None
+
+
+def _read_bvh(path: str | Path, fix_continuity: bool = True) -> Motion:
     path = str(path)
     with open(path, "r", encoding="utf-8") as f:
         lines = f.read().splitlines()
@@ -142,5 +153,6 @@ def subject_of(path: str | Path) -> int:
 def lafan1_files(data_dir: str | Path, subjects: Tuple[int, ...]) -> List[Path]:
     files = sorted(p for p in Path(data_dir).glob("*.bvh") if subject_of(p) in subjects)
     if not files:
-        raise FileNotFoundError(f"no LaFAN1 BVH files of subjects {subjects} in {data_dir}")
+        raise FileNotFoundError(f"{data_dir}: no LaFAN1 BVH files of subjects {subjects}; expected a folder of "
+                                "<theme><take>_subject<k>.bvh files (LaFAN1)")
     return files

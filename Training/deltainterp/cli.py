@@ -3,9 +3,12 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from pathlib import Path
 from typing import List, Optional
+
+from . import safe_output
 
 DEFAULT_DATA = "../shared/data/lafan1"
 DEFAULT_STATS = "../shared/data/lafan1/train_stats_official.json"
@@ -21,13 +24,20 @@ def _prepare(sub) -> None:
     p.add_argument("--stats", default=DEFAULT_STATS,
                    help="official statistics JSON; its bone offsets become the model's skeleton offsets")
     p.add_argument("--out", default=DEFAULT_PACK, help=f"output .npz (default {DEFAULT_PACK})")
+    p.add_argument("--force", action="store_true", help="replace an existing --out file")
 
 
 def _train(sub) -> None:
     p = sub.add_parser("train", help="train a model (resumes automatically from OUT/checkpoint.pt)",
                        description="Trains the Δ-Interpolator on a prepared pack. Writes OUT/checkpoint.pt "
                                    "(exact resume: rerun the same command), OUT/log.csv, OUT/validation.jsonl "
-                                   "and OUT/curves.png. Under torchrun it trains with DistributedDataParallel.")
+                                   "and OUT/curves.png. Under torchrun it trains with DistributedDataParallel. "
+                                   "These four files are the run's own: they are replaced (through a temporary "
+                                   "file) as the run goes, without --force. OUT must be new, empty or a run "
+                                   "folder; resuming refuses other settings or another architecture (naming "
+                                   "the difference) and warns about another --steps. Example (after `prepare`): "
+                                   "PYTHONPATH=Training python3 -m deltainterp train --preset tiny --steps 20 "
+                                   "--out Training/runs/try")
     p.add_argument("--data", default=DEFAULT_PACK, help="pack written by `prepare`")
     p.add_argument("--out", default="Training/runs/runtime", help="run folder (checkpoint, logs, plots)")
     p.add_argument("--preset", default="runtime", choices=["runtime", "paper", "tiny"],
@@ -104,6 +114,7 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--threads", type=int, default=1, help="torch intra-op threads (default 1)")
     p.add_argument("--json", required=True, help="where to write the results JSON")
     p.add_argument("--plot", help="also draw the table as bar charts into this PNG")
+    p.add_argument("--force", action="store_true", help="replace existing --json/--plot files")
 
     p = sub.add_parser(
         "export", help="export a checkpoint to ONNX: whole graph + lazy keys/frame graphs",
@@ -118,14 +129,26 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--checkpoint", required=True, help="checkpoint.pt from `train`")
     p.add_argument("--out", required=True, help="output path ending in .onnx")
     p.add_argument("--name", default="DeltaInterpolator-LaFAN1", help="model name in the metadata")
+    p.add_argument("--force", action="store_true", help="replace existing OUT, .keys.onnx and .frame.onnx files")
 
     p = sub.add_parser(
         "fixtures", help="write the tiny test model and golden vectors for the C# tests",
         description="Writes tiny-model.pt, tiny-model.onnx (+ .keys.onnx, .frame.onnx) and golden.json "
-                    "into --out. Deterministic: the same bytes on every run.")
+                    "into --out. Deterministic: the same bytes on every run. Regenerating replaces them by "
+                    "design (no --force; each through a temporary file + rename).")
     p.add_argument("--out", default="Tests/Fixtures", help="output folder (default Tests/Fixtures)")
     p.add_argument("--data", default=DEFAULT_DATA,
                    help="LaFAN1 folder for the skeleton (optional: a built-in copy is used without it)")
+
+
+def _refuse_non_finite(report: dict, data) -> None:
+    """A NaN or infinity in the results is an error (exit 2), never a number in a table or a file."""
+    for method, metrics in report.get("results", {}).items():
+        for metric, values in metrics.items():
+            for n, value in values.items():
+                if not math.isfinite(value):
+                    raise ValueError(f"{data}: the benchmark gave {metric.upper()} = {value} for {method} at n={n}; "
+                                     "expected finite results (a file with huge or broken motion values?)")
 
 
 def _size(n: int) -> str:
@@ -138,6 +161,10 @@ def _run_evaluate_export_fixtures(args) -> int:
         from .benchmark import format_table, run_benchmark
         from .checkpoint import load_checkpoint
         torch.set_num_threads(args.threads)
+        inputs = [args.checkpoint, args.stats]
+        safe_output.check(args.json, args.force, inputs)  # before the benchmark runs, not after
+        if args.plot:
+            safe_output.check(args.plot, args.force, inputs + [args.json])
         if args.checkpoint and args.checkpoint.endswith(".onnx"):
             from .warm_start import load_exported_model
             loaded = load_exported_model(args.checkpoint)
@@ -148,8 +175,8 @@ def _run_evaluate_export_fixtures(args) -> int:
         if loaded is not None:
             report["checkpoint"] = {"path": args.checkpoint, "step": loaded.step,
                                     "parameters": loaded.model.parameter_count(), **loaded.config.to_dict()}
-        Path(args.json).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.json).write_text(json.dumps(report, indent=2) + "\n")
+        _refuse_non_finite(report, args.data)
+        safe_output.write_text(args.json, json.dumps(report, indent=2, allow_nan=False) + "\n")
         print(format_table(report))
         print(f"\nwrote {args.json}")
         if args.plot:
@@ -158,8 +185,10 @@ def _run_evaluate_export_fixtures(args) -> int:
         return 0
     if args.verb == "export":
         from .checkpoint import load_checkpoint
-        from .export import export_model
+        from .export import export_model, graph_paths
         torch.set_num_threads(1)
+        for path in graph_paths(args.out).values():
+            safe_output.check(path, args.force, [args.checkpoint])
         loaded = load_checkpoint(args.checkpoint)
         report = export_model(loaded, args.out, args.name)
         print(f"{args.name}: {report.parameters:,} parameters, opset 15, checked against torch "
@@ -195,6 +224,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     try:
         if args.verb == "prepare":
             from .data import prepare
+            safe_output.check(args.out, args.force, [args.stats])  # before reading any BVH
             pack = prepare(args.data, args.out, args.stats)
             print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
                   f"{pack.skeleton.joint_count} joints")
@@ -217,6 +247,13 @@ def main(argv: Optional[List[str]] = None) -> int:
             print(f"checkpoint: {path}")
             return 0
         return _run_evaluate_export_fixtures(args)
-    except (FileNotFoundError, ValueError) as e:
+    except ValueError as e:  # CheckpointError, OutputPathError, bad data: `FILE: what; expected`
         print(f"error: {e}", file=sys.stderr)
+        return 2
+    except OSError as e:  # unreadable or unwritable files the checks above could not foresee
+        if e.filename is None:
+            print(f"error: {e}", file=sys.stderr)
+        else:
+            print(f"error: {e.filename}: {e.strerror or type(e).__name__}; expected a readable file or a "
+                  "writable place", file=sys.stderr)
         return 2

@@ -35,6 +35,8 @@ class MotionPack:
 
 def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN_SUBJECTS,
             progress: bool = True) -> MotionPack:
+    from .benchmark import load_statistics
+    statistics = load_statistics(stats) if stats else None  # a bad statistics file fails before any BVH is read
     files = lafan1_files(data_dir, tuple(subjects))
     roots, quats, names = [], [], []
     skeleton = None
@@ -55,10 +57,10 @@ def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN
     assert skeleton is not None
     if stats:
         # The official benchmark computes positions with the training offsets of its statistics file.
-        s = json.loads(Path(stats).read_text())
-        offsets = np.zeros((skeleton.joint_count, 3))
-        offsets[1:] = np.asarray(s["offsets"], dtype=np.float64).reshape(-1, 3)
-        skeleton = with_offsets(skeleton, offsets)
+        if len(statistics.offsets) != skeleton.joint_count:
+            raise ValueError(f"{stats}: offsets for {len(statistics.offsets)} joints; expected the BVH files' "
+                             f"{skeleton.joint_count}")
+        skeleton = with_offsets(skeleton, statistics.offsets)
     starts = np.cumsum([0] + [len(r) for r in roots])
     pack = MotionPack(skeleton, names, starts, np.concatenate(roots), np.concatenate(quats), frame_time)
     save_pack(pack, out)
@@ -66,18 +68,48 @@ def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN
 
 
 def save_pack(pack: MotionPack, path: str) -> None:
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    np.savez_compressed(path, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files),
-                        starts=pack.starts, root_positions=pack.root_positions,
-                        local_quaternions=pack.local_quaternions, frame_time=pack.frame_time)
+    """Writes the pack to exactly `path` through a temporary file beside it (safe_output; the caller
+    checks the path, --force, before reading any BVH)."""
+    from . import safe_output
+    safe_output.write(path, lambda f: np.savez_compressed(
+        f, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files), starts=pack.starts,
+        root_positions=pack.root_positions, local_quaternions=pack.local_quaternions,
+        frame_time=pack.frame_time))
+
+
+PACK_EXPECTED = "expected a pack written by `python3 -m deltainterp prepare`"
 
 
 def load_pack(path: str) -> MotionPack:
-    if not Path(path).exists():
-        raise FileNotFoundError(f"{path} not found; run `python3 -m deltainterp prepare` first")
-    z = np.load(path, allow_pickle=False)
-    return MotionPack(Skeleton.from_json(json.loads(str(z["skeleton"]))), [str(f) for f in z["files"]],
-                      z["starts"], z["root_positions"], z["local_quaternions"], float(z["frame_time"]))
+    """A pack written by `prepare`; ValueError (`PATH: what; expected`) for anything else. No pickles."""
+    p = Path(path)
+    if not p.exists():
+        raise FileNotFoundError(f"{path}: not found; {PACK_EXPECTED} first")
+    if not p.is_file():
+        raise ValueError(f"{path}: is {'a directory' if p.is_dir() else 'not a regular file'}; {PACK_EXPECTED}")
+    try:
+        with np.load(path, allow_pickle=False) as z:
+            pack = MotionPack(Skeleton.from_json(json.loads(str(z["skeleton"]))), [str(f) for f in z["files"]],
+                              np.asarray(z["starts"]), np.asarray(z["root_positions"]),
+                              np.asarray(z["local_quaternions"]), float(z["frame_time"]))
+    except Exception as e:  # noqa: BLE001 - a file from anywhere: any failure to read it is the file's
+        detail = " ".join(str(e).split())[:160]
+        raise ValueError(f"{path}: not a readable pack ({type(e).__name__}: {detail}); {PACK_EXPECTED}") from None
+    frames, joints = len(pack.root_positions), pack.skeleton.joint_count
+    problem = None
+    if pack.root_positions.shape != (frames, 3) or pack.local_quaternions.shape != (frames, joints, 4):
+        problem = (f"arrays of shapes {pack.root_positions.shape} and {pack.local_quaternions.shape} for "
+                   f"{joints} joints")
+    elif len(pack.starts) != len(pack.files) + 1 or pack.starts[0] != 0 or pack.starts[-1] != frames \
+            or np.any(np.diff(pack.starts) < 0):
+        problem = "file start frames that do not cover its frames"
+    elif not (np.isfinite(pack.root_positions).all() and np.isfinite(pack.local_quaternions).all()):
+        problem = "non-finite motion values"
+    elif not (np.isfinite(pack.frame_time) and pack.frame_time > 0):
+        problem = f"frame time {pack.frame_time}"
+    if problem:
+        raise ValueError(f"{path}: pack holds {problem}; {PACK_EXPECTED}")
+    return pack
 
 
 def windows(frame_count: int, length: int, offset: int) -> List[int]:

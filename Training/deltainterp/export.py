@@ -22,7 +22,7 @@ import numpy as np
 import torch
 from torch import nn
 
-from . import contract as C
+from . import contract as C, safe_output
 from .checkpoint import LoadedModel
 from .model import DeltaInterpolator
 from .operators import check_operators
@@ -266,6 +266,8 @@ def verify(loaded: LoadedModel, protos: Dict[str, object], tolerance: float = 1e
             if got.shape != want.shape:
                 raise ExportCheckError(f"{what}: shape {got.shape} != {want.shape} (K={keys}, N={queries})")
             diff = float(np.abs(got - want).max()) if got.size else 0.0
+            if not np.isfinite(diff):
+                raise ExportCheckError(f"{what}: non-finite outputs (K={keys}, N={queries}); expected finite ones")
             worst = max(worst, diff)
             if diff > tolerance:
                 raise ExportCheckError(f"{what}: max |diff| {diff:.3g} > {tolerance} (K={keys}, N={queries})")
@@ -297,9 +299,8 @@ def export_model(loaded: LoadedModel, out: str | Path, name: str = "DeltaInterpo
     worst = verify(loaded, protos) if check else float("nan")
     sizes, ops = {}, {}
     for kind, proto in protos.items():
-        paths[kind].parent.mkdir(parents=True, exist_ok=True)
         data = proto.SerializeToString()
-        paths[kind].write_bytes(data)
+        safe_output.write_bytes(paths[kind], data)  # temporary file + rename (the CLI checked the paths)
         sizes[kind] = len(data)
         ops[kind] = check_operators(proto, kind)
     _ = onnx

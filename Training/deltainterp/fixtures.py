@@ -18,8 +18,8 @@ import numpy as np
 import torch
 
 from . import contract as C
-from . import quaternions
-from .checkpoint import LoadedModel, load_checkpoint
+from . import quaternions, safe_output
+from .checkpoint import LoadedModel, load_checkpoint, save_checkpoint_file
 from .kinematics import forward_kinematics
 from .lafan1 import lafan1_skeleton
 from .model import DeltaInterpolator, preset
@@ -197,14 +197,18 @@ def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -
     """tiny-model.pt, tiny-model{,.keys,.frame}.onnx and golden.json in `out_dir`."""
     from .export import export_model
     out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise ValueError(f"{out}: is a file, not a folder; expected the fixtures folder (Tests/Fixtures)")
     out.mkdir(parents=True, exist_ok=True)
     loaded = make_tiny_model(lafan1_skeleton(data_dir))
     ckpt = out / f"{MODEL_NAME}.pt"
-    torch.save(checkpoint_state(loaded), ckpt)
+    # Regenerating the repository's fixtures replaces them by design (no --force); each file still goes
+    # through a temporary file + rename, so a failure leaves the previous set intact.
+    save_checkpoint_file(checkpoint_state(loaded), ckpt)
     loaded = load_checkpoint(ckpt)  # everything below goes through what evaluate/export would load
     report = export_model(loaded, out / f"{MODEL_NAME}.onnx", name="DeltaInterpolator-tiny-fixture")
     doc = golden_document(loaded)
     check_golden_against_onnx(doc, report.paths["whole"])
     golden = out / "golden.json"
-    golden.write_text(dump_golden(doc))
+    safe_output.write_text(golden, dump_golden(doc))
     return {"checkpoint": ckpt, **{f"onnx_{k}": v for k, v in report.paths.items()}, "golden": golden}

@@ -5,6 +5,8 @@ import csv
 import json
 from pathlib import Path
 
+from . import safe_output
+
 
 def plot_training(run_dir: str | Path) -> Path:
     import matplotlib
@@ -12,7 +14,8 @@ def plot_training(run_dir: str | Path) -> Path:
     import matplotlib.pyplot as plt
 
     run = Path(run_dir)
-    rows = list(csv.DictReader(open(run / "log.csv")))
+    with open(run / "log.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
     steps = [int(r["step"]) for r in rows]
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
     for key in ("total", "quat", "pos", "key_quat", "key_pos"):
@@ -24,7 +27,8 @@ def plot_training(run_dir: str | Path) -> Path:
     axes[0].legend()
     val_path = run / "validation.jsonl"
     if val_path.exists():
-        vals = [json.loads(l) for l in open(val_path)]
+        with open(val_path) as f:
+            vals = [json.loads(line) for line in f if line.strip()]
         vs = [v["step"] for v in vals]
         for n, color in zip((5, 15, 30), ("tab:blue", "tab:orange", "tab:green")):
             axes[1].plot(vs, [v[f"model_l2q_{n}"] for v in vals], color=color, label=f"model L2Q n={n}")
@@ -34,9 +38,11 @@ def plot_training(run_dir: str | Path) -> Path:
         axes[1].set_title("validation L2Q (held-out tails of training files)")
         axes[1].legend(fontsize=8)
     fig.tight_layout()
-    out = run / "curves.png"
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+    out = run / "curves.png"  # the run's own file: replaced on every call, through a temporary file
+    try:
+        safe_output.write(out, lambda f: fig.savefig(f, format="png", dpi=110))
+    finally:
+        plt.close(fig)
     return out
 
 
@@ -67,8 +73,9 @@ def plot_benchmark(report: dict, out: str | Path) -> Path:
     fig.suptitle(f"LaFAN1 benchmark, {report.get('windows', '?')} windows of {report.get('window', '?')} "
                  f"frames every {report.get('offset', '?')} (lower is better)")
     fig.tight_layout()
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+    out = Path(out)  # the caller checked it (safe_output.check) before the benchmark ran
+    try:
+        safe_output.write(out, lambda f: fig.savefig(f, format="png", dpi=110))
+    finally:
+        plt.close(fig)
     return out

@@ -18,12 +18,14 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 import time
 from typing import Dict, List
 
 import numpy as np
 import torch
 
+from . import safe_output
 from .checkpoint import LoadedModel
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
@@ -100,10 +102,19 @@ def main(argv=None) -> int:
     p.add_argument("--budget", type=float, default=10.0,
                    help="seconds per length after which fewer repeats are accepted (default 10)")
     p.add_argument("--no-paper", action="store_true", help="skip the paper preset")
-    p.add_argument("--json", required=True, help="output JSON")
+    p.add_argument("--json", required=True, help="output JSON (refused when it exists, unless --force)")
+    p.add_argument("--force", action="store_true", help="replace an existing --json file")
     args = p.parse_args(argv)
-    with open(args.config) as f:
-        meta = json.load(f)
+    try:
+        safe_output.check(args.json, args.force, [args.config])  # before the timing, not after it
+        with open(args.config) as f:
+            meta = json.load(f)
+    except (OSError, ValueError) as e:
+        message = f"{e.filename}: {e.strerror}; expected a readable file" if isinstance(e, OSError) and e.filename \
+            else (str(e) if isinstance(e, safe_output.OutputPathError) else f"{args.config}: not JSON ({e}); expected "
+                  "the model's 'deltainterp' metadata JSON")
+        print(f"error: {message}", file=sys.stderr)
+        return 2
     torch.set_num_threads(args.threads)
     lengths = [int(v) for v in args.lengths.split(",") if v.strip()]
     loaded = build(meta, paper=False)
@@ -116,8 +127,7 @@ def main(argv=None) -> int:
         result["paper_parameters"] = paper.model.parameter_count()
         result["paper_transition_ms"] = time_transitions(paper, lengths, args.past, max(3, args.warmup // 4),
                                                          args.repeats, args.budget)
-    with open(args.json, "w") as f:
-        json.dump(result, f, indent=2)
+    safe_output.write_text(args.json, json.dumps(result, indent=2))
     return 0
 
 

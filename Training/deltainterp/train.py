@@ -3,6 +3,7 @@ CPU / GPU / torchrun (DistributedDataParallel, gloo or nccl)."""
 from __future__ import annotations
 
 import csv
+import io
 import json
 import math
 import os
@@ -15,8 +16,9 @@ from typing import Dict, List, Optional
 import numpy as np
 import torch
 
-from . import quaternions
+from . import quaternions, safe_output
 from .benchmark import l2q as benchmark_l2q
+from .checkpoint import CheckpointError, read_checkpoint, save_checkpoint_file
 from .data import MotionPack, load_pack, split_windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
@@ -148,6 +150,72 @@ def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
     return loaded.model.state_dict()
 
 
+# Settings a resumed run must share with the run it continues (else it is another experiment): option names
+# as the CLI spells them. Not compared: where files are (--data, --out, --init-from), --threads, how often
+# it logs, validates and checkpoints, --max-minutes, and --steps (allowed with a warning: a run may be
+# extended or shortened to fit the time left). The architecture is compared on the built model_config.
+RESUME_SETTINGS = {"batch_size": "--batch-size", "peak_lr": "--lr", "warmup_steps": "--warmup",
+                   "decay_at": "--decay-at", "reconstruction_scale": "--reconstruction-scale", "seed": "--seed",
+                   "unit_scale": "unit_scale", "mirror": "--mirror", "random_yaw": "--random-yaw",
+                   "min_past": "--min-past", "longest_past_share": "--longest-past-share"}
+
+
+def run_checkpoint(out: Path) -> Optional[Path]:
+    """OUT/checkpoint.pt when OUT is a run folder to resume, None for a new run (OUT missing or empty).
+    Refuses (ValueError, `OUT: what; expected`) a regular file, or a folder that holds files but no
+    checkpoint: never append our logs to someone else's files."""
+    expected = "expected a new or empty folder, or a run folder written by `train`"
+    if out.exists() and not out.is_dir():
+        raise ValueError(f"{out}: is a file, not a folder; {expected}")
+    ckpt = out / "checkpoint.pt"
+    if not out.is_dir():
+        return None
+    if os.path.lexists(ckpt):
+        return ckpt
+    found = sorted(p.name for p in out.iterdir())
+    if found:
+        shown = ", ".join(found[:4]) + (f" and {len(found) - 4} more" if len(found) > 4 else "")
+        raise ValueError(f"{out}: holds {shown} but no checkpoint.pt; {expected} (choose another --out)")
+    return None
+
+
+def resume_differences(saved: Dict, cfg: TrainConfig) -> List[str]:
+    """`--lr 0.001 but the run used 0.0003` for every setting that must match (RESUME_SETTINGS)."""
+    now = asdict(cfg)
+    return [f"{option} {now[key]} but the run used {saved[key]}" for key, option in RESUME_SETTINGS.items()
+            if key in saved and saved[key] != now[key]]
+
+
+def architecture_differences(saved: Dict, config: ModelConfig) -> List[str]:
+    now = config.to_dict()
+    return [f"{key} {now.get(key)} but the run used {saved.get(key)}" for key in sorted(set(saved) | set(now))
+            if saved.get(key) != now.get(key)]
+
+
+def _record_step(line: str, csv_row: bool) -> Optional[int]:
+    try:
+        return int(line.split(",", 1)[0]) if csv_row else int(json.loads(line)["step"])
+    except (ValueError, KeyError, TypeError):
+        return None
+
+
+def trim_run_logs(out: Path, step: int) -> int:
+    """On resume: drop the log.csv rows and validation.jsonl records of steps after the checkpoint (a run
+    stopped between a log and its next checkpoint redoes those steps; without this they would appear twice).
+    Returns how many were dropped. Lines that are not records (the header) stay."""
+    dropped = 0
+    for name, csv_row in (("log.csv", True), ("validation.jsonl", False)):
+        path = out / name
+        if not path.is_file():
+            continue
+        lines = path.read_text().splitlines(keepends=True)
+        kept = [line for line in lines if (_record_step(line, csv_row) or 0) <= step]
+        if len(kept) != len(lines):
+            dropped += len(lines) - len(kept)
+            safe_output.write_text(path, "".join(kept))
+    return dropped
+
+
 def _distributed() -> bool:
     return int(os.environ.get("WORLD_SIZE", "1")) > 1
 
@@ -163,33 +231,74 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     if cfg.threads:
         torch.set_num_threads(cfg.threads)
     out = Path(cfg.out)
+    existing = run_checkpoint(out)  # before any work: refuses a file, or a folder of other files
+    ckpt_path = out / "checkpoint.pt"
+    state = read_checkpoint(existing) if existing else None
+    if state is not None:
+        for key in ("model", "optimizer", "step", "rng", "torch_rng", "python_rng", "model_config"):
+            if key not in state:
+                raise CheckpointError(ckpt_path, f"lacks {key!r}", "expected a checkpoint `train` wrote (to resume)")
+        saved_cfg = dict(state.get("train_config") or {})
+        different = resume_differences(saved_cfg, cfg)
+        if different:
+            raise CheckpointError(ckpt_path, "resuming with " + ", ".join(different),
+                                  "expected the same settings (or a new --out)")
+        if int(state["step"]) > cfg.steps:
+            raise CheckpointError(ckpt_path, f"the run is already at step {int(state['step'])}, past --steps "
+                                  f"{cfg.steps}", f"expected --steps ≥ {int(state['step'])} (or a new --out)")
+        if rank == 0 and progress and "steps" in saved_cfg and saved_cfg["steps"] != cfg.steps:
+            print(f"warning: {ckpt_path}: --steps {cfg.steps} but the run used {saved_cfg['steps']}: training on to "
+                  f"step {cfg.steps}, the lr drop moves from step {int(cfg.decay_at * saved_cfg['steps'])} to "
+                  f"{int(cfg.decay_at * cfg.steps)}")
+        if rank == 0 and progress and saved_cfg.get("data", cfg.data) != cfg.data:
+            print(f"warning: {ckpt_path}: --data {cfg.data} but the run used {saved_cfg['data']}")
     out.mkdir(parents=True, exist_ok=True)
     pack = load_pack(cfg.data)
     train_starts, val_starts = split_windows(pack)
     skeleton = skeleton_tensors(pack, cfg.unit_scale, device)
     model_cfg = preset(cfg.preset, joints=pack.skeleton.joint_count, **cfg.model_overrides)
+    if state is not None:
+        different = architecture_differences(dict(state["model_config"]), model_cfg)
+        if different:
+            raise CheckpointError(ckpt_path, "resuming another architecture: " + ", ".join(different),
+                                  "expected the run's --preset and overrides (or a new --out)")
 
     torch.manual_seed(cfg.seed)  # seed BEFORE building the model: the seed decides the initial weights
     model = DeltaInterpolator(model_cfg).to(device)
-    if cfg.init_from and not (out / "checkpoint.pt").exists():
+    if cfg.init_from and state is None:
         model.load_state_dict(initial_weights(cfg.init_from, model_cfg))
         if rank == 0 and progress:
             print(f"initial weights from {cfg.init_from}")
     optimizer = torch.optim.Adam(model.parameters(), lr=learning_rate(cfg, 0))
     rng = np.random.default_rng([cfg.seed, rank])
     step = 0
-    ckpt_path = out / "checkpoint.pt"
-    if ckpt_path.exists():
-        # weights_only=False: the checkpoint holds RNG states (torch ≥ 2.6 defaults to weights_only=True)
-        state = torch.load(ckpt_path, map_location=device, weights_only=False)
-        model.load_state_dict(state["model"])
-        optimizer.load_state_dict(state["optimizer"])
-        step = state["step"]
-        rng.bit_generator.state = state["rng"][rank]
-        torch.set_rng_state(state["torch_rng"])
-        random.setstate(state["python_rng"])
+    if state is not None:
+        # read_checkpoint loaded it without running code from it (weights-only; RNG states as plain values)
+        try:
+            model.load_state_dict(state["model"])
+            optimizer.load_state_dict(state["optimizer"])
+            step = int(state["step"])
+            if rank < len(state["rng"]):
+                rng.bit_generator.state = state["rng"][rank]
+            else:  # more processes than the run had: a new, distinct data stream for this one
+                rng = np.random.default_rng([cfg.seed, rank, step])
+            if len(state["rng"]) != world and rank == 0 and progress:
+                print(f"warning: {ckpt_path}: the run had {len(state['rng'])} process(es), now {world}: "
+                      "the resume is not exact (data streams differ)")
+            torch.set_rng_state(state["torch_rng"])
+            random.setstate(tuple(tuple(v) if isinstance(v, list) else v for v in state["python_rng"]))
+        except (RuntimeError, ValueError, TypeError, KeyError, IndexError) as e:
+            detail = " ".join(str(e).split())[:200]
+            raise CheckpointError(ckpt_path, f"cannot be resumed ({type(e).__name__}: {detail})",
+                                  "expected a checkpoint `train` wrote with the same settings")
+        del state
+        dropped = trim_run_logs(out, step) if rank == 0 else 0
         if rank == 0 and progress:
             print(f"resumed from {ckpt_path} at step {step}")
+            if dropped:
+                print(f"dropped {dropped} log record(s) written after the checkpoint's step {step} (they are redone)")
+            if step >= cfg.steps:
+                print(f"{ckpt_path}: the run is complete at step {step} (--steps {cfg.steps}); nothing to train")
     net = model
     if world > 1:
         from torch.nn.parallel import DistributedDataParallel
@@ -221,9 +330,7 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
                  "rng": rngs, "torch_rng": torch.get_rng_state(), "python_rng": random.getstate(),
                  "model_config": model_cfg.to_dict(), "train_config": asdict(cfg),
                  "skeleton": pack.skeleton.to_json(), "unit_scale": cfg.unit_scale, "validation": last_val}
-        tmp = ckpt_path.with_suffix(".tmp")
-        torch.save(state, tmp)
-        os.replace(tmp, ckpt_path)
+        save_checkpoint_file(state, ckpt_path)  # format 2 (loads weights-only), temporary file + rename
 
     def time_is_up() -> bool:
         up = cfg.max_minutes > 0 and (time.time() - started) > cfg.max_minutes * 60
@@ -247,28 +354,40 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         optimizer.step()
         step += 1
         window_losses.append({k: float(v) for k, v in terms.items()})
+        if not math.isfinite(window_losses[-1]["total"]):
+            # Every rank sees it by the next step (the NaN gradients are all-reduced), so none hangs.
+            if bar is not None:
+                bar.close()  # the error line goes on a line of its own
+            raise ValueError(f"{ckpt_path}: the training loss became non-finite at step {step} "
+                             f"({window_losses[-1]['total']}); expected finite (lower --lr?). The last "
+                             f"checkpoint is kept; log.csv and validation.jsonl hold no NaN")
         if rank == 0 and bar is not None:
             bar.update(1)
             bar.set_postfix(loss=f"{window_losses[-1]['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
         if rank == 0 and (step % 50 == 0 or step == cfg.steps):
             row = {k: float(np.mean([w.get(k, 0.0) for w in window_losses])) for k in fields[2:7]}
             row.update(step=step, lr=lr, seconds=round(time.time() - started, 1))
-            new = not log_path.exists()
-            with open(log_path, "a", newline="") as f:
-                # Fixed columns: validation metrics live in validation.jsonl. (Appending them here gave
-                # rows with more cells than the header, which was written before the first validation.)
-                w = csv.DictWriter(f, fieldnames=fields)
-                if new:
-                    w.writeheader()
-                w.writerow(row)
+            text = io.StringIO(newline="")
+            # Fixed columns: validation metrics live in validation.jsonl. (Appending them here gave
+            # rows with more cells than the header, which was written before the first validation.)
+            w = csv.DictWriter(text, fieldnames=fields)
+            if not log_path.exists():
+                w.writeheader()
+            w.writerow(row)
+            safe_output.append_text(log_path, text.getvalue())  # whole file via temp + rename
             window_losses.clear()
         if rank == 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             last_val = validation_metrics(model, pack, val_starts, skeleton)
             for p in VALIDATION_SHORT_PASTS if cfg.min_past < 10 else ():
                 short = validation_metrics(model, pack, val_starts, skeleton, past=p)
                 last_val.update({f"p{p}_{k}": v for k, v in short.items()})
-            with open(out / "validation.jsonl", "a") as f:
-                f.write(json.dumps({"step": step, **last_val}) + "\n")
+            bad = sorted(k for k, v in last_val.items() if not math.isfinite(v))
+            if bad:
+                if bar is not None:
+                    bar.close()
+                raise ValueError(f"{ckpt_path}: validation gave non-finite {', '.join(bad[:3])} at step {step}; "
+                                 f"expected finite (a diverged network?). The last checkpoint is kept")
+            safe_output.append_text(out / "validation.jsonl", json.dumps({"step": step, **last_val}) + "\n")
             if bar is not None:
                 bar.write(f"step {step}: " + "  ".join(
                     f"n={n} L2Q {last_val[f'model_l2q_{n}']:.3f} (slerp {last_val.get(f'slerp_l2q_{n}', float('nan')):.3f})"

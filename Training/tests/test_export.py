@@ -208,7 +208,7 @@ def test_fixture_checkpoint_round_trip(tiny, tmp_path):
     assert loaded.skeleton.names == tiny.skeleton.names
     for name, w in tiny.model.state_dict().items():
         assert torch.equal(w, loaded.model.state_dict()[name])
-    with pytest.raises(FileNotFoundError):
+    with pytest.raises(ValueError, match="missing.pt: not found"):
         load_checkpoint(tmp_path / "missing.pt")
     torch.save({"model": {}}, tmp_path / "bad.pt")
     with pytest.raises(ValueError, match="not a deltainterp checkpoint"):

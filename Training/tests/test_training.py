@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 import torch
 
+from deltainterp.checkpoint import read_checkpoint
 from deltainterp.data import load_pack, split_windows
 from deltainterp.model import DeltaInterpolator, ModelConfig, preset
 from deltainterp.objective import loss, make_batch
@@ -50,7 +51,7 @@ def test_loss_falls(synthetic_pack_path, tmp_path):
     torch.manual_seed(cfg.seed)
     initial = DeltaInterpolator(preset("tiny", joints=22, dropout=0.1))
     before = fixed_batch_loss(synthetic_pack_path, initial)
-    state = torch.load(train(cfg, progress=False), weights_only=False)
+    state = read_checkpoint(train(cfg, progress=False))
     trained = DeltaInterpolator(ModelConfig(**state["model_config"]))
     trained.load_state_dict(state["model"])
     after = fixed_batch_loss(synthetic_pack_path, trained)
@@ -64,9 +65,9 @@ def test_loss_falls(synthetic_pack_path, tmp_path):
 
 
 def test_resume_equals_uninterrupted_run(synthetic_pack_path, tmp_path):
-    straight = torch.load(train(config(synthetic_pack_path, tmp_path / "a", steps=12), progress=False), weights_only=False)
+    straight = read_checkpoint(train(config(synthetic_pack_path, tmp_path / "a", steps=12), progress=False))
     train(config(synthetic_pack_path, tmp_path / "b", steps=5), progress=False)
-    resumed = torch.load(train(config(synthetic_pack_path, tmp_path / "b", steps=12), progress=False), weights_only=False)
+    resumed = read_checkpoint(train(config(synthetic_pack_path, tmp_path / "b", steps=12), progress=False))
     assert resumed["step"] == straight["step"] == 12
     for name, w in straight["model"].items():
         assert torch.equal(w, resumed["model"][name]), f"{name} differs after resume"
@@ -102,6 +103,6 @@ def test_two_process_gloo_ddp(synthetic_pack_path, tmp_path):
                 q.kill()
             raise
     assert [p.returncode for p in procs] == [0, 0], "\n".join(log[-3000:] for log in logs)
-    state = torch.load(out / "checkpoint.pt", weights_only=False)
+    state = read_checkpoint(out / "checkpoint.pt")
     assert state["step"] == 4
     assert len(state["rng"]) == 2 and state["rng"][0] != state["rng"][1]  # one data stream per rank
