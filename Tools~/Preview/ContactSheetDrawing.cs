@@ -140,7 +140,7 @@ namespace DeltaInterpolator.Preview
             string? note = null;
             if (track == _scene.GroundTruthTrack)
             {
-                note = "ground truth";
+                note = "the reference for errors";
             }
             else if (_scene.GroundTruthTrack >= 0)
             {

@@ -80,7 +80,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "Examples:\n" +
                 "  inbetween preview ../shared/data/lafan1/walk4_subject1.bvh ../shared/data/lafan1/dance1_subject1.bvh --frames 0-299 --out out/preview.html\n" +
                 "  inbetween preview --truth ../shared/data/lafan1/obstacles1_subject5.bvh --track Other=../shared/data/lafan1/ground1_subject5.bvh \\\n" +
-                "      --keys 0,30,60,90 --frames 1000-1120 --out out/compare.html --png out/compare.png --force");
+                "      --keys 1000,1030,1060,1090,1120 --frames 1000-1120 --out out/compare.html --png out/compare.png --force");
             command.Arguments.Add(_files);
             command.Options.Add(_truth);
             command.Options.Add(_tracks);

@@ -71,7 +71,7 @@
   function fmt(x) { return x >= 100 ? x.toFixed(0) : x >= 10 ? x.toFixed(1) : x >= 1 ? x.toFixed(2) : x.toPrecision(2); }
 
   // ---- camera: spherical orbit around a target -------------------------------------------------
-  var FOV = 40 * Math.PI / 180;
+  var FOV = 32 * Math.PI / 180;
   var cam = {};
   function center(frame) {
     var x = 0, z = 0;
@@ -87,9 +87,9 @@
     var o0 = tracks[0].offset, o1 = tracks[tracks.length - 1].offset;
     var width = Math.hypot(o1[0] - o0[0], o1[2] - o0[2]) + 1.2 * H;
     var aspect = Math.max(0.5, view.w / Math.max(1, view.h)), tan = Math.tan(FOV / 2);
-    cam.yaw = yaw0 + 0.6;
-    cam.pitch = 0.28;
-    cam.dist = Math.max(1.9 * H / (2 * tan), 1.1 * width / (2 * tan * aspect));
+    cam.yaw = yaw0 + 0.3;
+    cam.pitch = 0.3;
+    cam.dist = Math.max(2.2 * H / (2 * tan), 1.3 * width / (2 * tan * aspect));
     cam.target = center(state.frame);
   }
 
@@ -162,7 +162,7 @@
     ctx.clearRect(0, 0, view.w, view.h);
     drawGrid();
     var frame = state.frame, isKey = keySet.has(frame);
-    var items = [], boneWidth = 0.028 * H, jointRadius = 0.022 * H;
+    var items = [], boneWidth = 0.026 * H, jointRadius = 0.017 * H;
     ctx.lineCap = 'round';
     tracks.forEach(function (t) {
       var pts = [], shadow = [];
@@ -197,7 +197,7 @@
         ctx.lineWidth = Math.max(1.5, boneWidth * scale);
         ctx.beginPath(); ctx.moveTo(it.a[0], it.a[1]); ctx.lineTo(it.b[0], it.b[1]); ctx.stroke();
       } else {
-        var rad = Math.max(2, (it.head ? 2.6 : 1) * jointRadius * scale);
+        var rad = Math.max(2, (it.head ? 2.4 : 1) * jointRadius * scale);
         ctx.beginPath(); ctx.arc(it.a[0], it.a[1], rad, 0, 2 * Math.PI);
         ctx.fillStyle = isKey ? '#ffc933' : '#f4f6f8';
         ctx.fill();
@@ -252,12 +252,13 @@
     var max = 0;
     withErrors.forEach(function (t) { t.errors.forEach(function (e) { if (e > max) max = e; }); });
     var step = niceStep(Math.max(max, 1e-9) / 4), ymax = Math.ceil(max / step) * step || step;
+    var decimals = Math.max(0, Math.min(6, -Math.floor(Math.log10(step))));
     var X = function (f) { return left + (N > 1 ? f / (N - 1) : 0) * (w - left - right); };
     var Y = function (e) { return h - bottom - e / ymax * (h - top - bottom); };
     plotGeom = { X: X, left: left, right: right, w: w };
     for (var v = 0; v <= ymax + step / 2; v += step) {
       el('line', { x1: left, x2: w - right, y1: Y(v), y2: Y(v), stroke: '#2c333b' }, plot);
-      el('text', { x: left - 6, y: Y(v) + 4, 'text-anchor': 'end' }, plot).textContent = v === 0 ? '0' : fmt(v);
+      el('text', { x: left - 6, y: Y(v) + 4, 'text-anchor': 'end' }, plot).textContent = v.toFixed(decimals);
     }
     keys.forEach(function (k) { el('line', { x1: X(k), x2: X(k), y1: top, y2: h - bottom, stroke: '#ffc933', 'stroke-opacity': 0.35 }, plot); });
     var fstep = niceStep(Math.max(1, (N - 1) / 8));
