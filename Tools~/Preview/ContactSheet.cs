@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using DeltaInterpolator.Core.IO;
+using Microsoft.Playwright;
 
 namespace DeltaInterpolator.Preview
 {
@@ -8,7 +9,7 @@ namespace DeltaInterpolator.Preview
     /// A still picture of a scene, in the spirit of Figure 4 of the Δ-Interpolator paper: one row per
     /// track, each with a side view and a top view of poses at and between the key frames, and trails of
     /// the root, hands and feet. Drawn as SVG; rasterised to PNG by headless Chromium when it is
-    /// installed (<see cref="FindChromium"/>), otherwise written as SVG (<see cref="OutputPathFor"/>).
+    /// installed (<see cref="FindChromium"/>), otherwise written as SVG (<see cref="Write"/>).
     /// </summary>
     public static class ContactSheet
     {
@@ -30,21 +31,43 @@ namespace DeltaInterpolator.Preview
         }
 
         /// <summary>
-        /// Writes the sheet as PNG when Chromium is installed, else as SVG beside it
-        /// (<see cref="OutputPathFor"/>), through <see cref="OutputFile"/>.
+        /// Writes the sheet as PNG when Chromium is installed and starts, else as SVG beside it (same
+        /// name, extension <c>.svg</c>), through <see cref="OutputFile"/>. Check
+        /// <see cref="OutputPathFor"/> before the work; an SVG written because Chromium failed to start
+        /// is checked here, with <paramref name="force"/>.
         /// </summary>
+        /// <param name="scene">What to draw.</param>
+        /// <param name="pngPath">The PNG file asked for.</param>
+        /// <param name="force">Whether an existing SVG may be replaced when falling back.</param>
+        /// <param name="fallback">Null when the PNG was written; else one line saying why an SVG was written instead.</param>
         /// <returns>The path written.</returns>
-        public static string Write(PreviewScene scene, string pngPath)
+        public static string Write(PreviewScene scene, string pngPath, bool force, out string? fallback)
         {
+            string svgPath = Path.ChangeExtension(pngPath, ".svg");
             string? chromium = FindChromium();
             if (chromium == null)
             {
-                string svgPath = Path.ChangeExtension(pngPath, ".svg");
+                fallback = $"no Chromium found (install Debian's chromium for PNG): wrote {svgPath} instead of {pngPath}";
                 WriteSvg(scene, svgPath);
                 return svgPath;
             }
 
-            WritePng(scene, pngPath, chromium);
+            byte[] png;
+            try
+            {
+                png = RenderPng(scene, chromium);
+            }
+            catch (Exception e) when (e is PlaywrightException || e is TimeoutException)
+            {
+                string reason = e.Message.Split('\n')[0].Trim();
+                fallback = $"Chromium ({chromium}) failed: {reason}; wrote {svgPath} instead of {pngPath}";
+                OutputFile.Check(svgPath, force);
+                WriteSvg(scene, svgPath);
+                return svgPath;
+            }
+
+            OutputFile.WriteAllBytes(pngPath, png);
+            fallback = null;
             return pngPath;
         }
 

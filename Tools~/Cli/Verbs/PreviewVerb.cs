@@ -139,10 +139,9 @@ namespace DeltaInterpolator.Cli.Verbs
             string htmlPath = parse.GetValue(_out)!;
             OutputFile.Check(htmlPath, force, inputs);
             string? pngPath = parse.GetValue(_png);
-            string? sheetPath = null;
             if (pngPath != null)
             {
-                sheetPath = ContactSheet.OutputPathFor(pngPath);
+                string sheetPath = ContactSheet.OutputPathFor(pngPath);
                 if (string.Equals(Path.GetFullPath(sheetPath), Path.GetFullPath(htmlPath), StringComparison.Ordinal))
                 {
                     throw new CliErrors.UsageException($"{pngPath}: the same file as --out; expected a different path for the contact sheet");
@@ -216,18 +215,20 @@ namespace DeltaInterpolator.Cli.Verbs
                 }
             }
 
-            if (pngPath != null && sheetPath != null)
+            if (pngPath != null)
             {
-                if (sheetPath == pngPath)
+                string? fallback = null;
+                string written = pngPath;
+                if (ContactSheet.FindChromium() != null)
                 {
-                    AnsiConsole.Status().Start("Rasterising the contact sheet with headless Chromium...", _ => ContactSheet.WritePng(scene, pngPath));
-                    AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", pngPath, new FileInfo(pngPath).Length / 1024.0)));
+                    AnsiConsole.Status().Start("Rasterising the contact sheet with headless Chromium...", _ => written = ContactSheet.Write(scene, pngPath, force, out fallback));
                 }
                 else
                 {
-                    ContactSheet.WriteSvg(scene, sheetPath);
-                    AnsiConsole.MarkupLine(Markup.Escape($"no Chromium found (install Debian's chromium for PNG): wrote {sheetPath} instead of {pngPath}"));
+                    written = ContactSheet.Write(scene, pngPath, force, out fallback);
                 }
+
+                AnsiConsole.MarkupLine(Markup.Escape(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0)));
             }
 
             return 0;

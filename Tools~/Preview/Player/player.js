@@ -351,6 +351,9 @@
   }
   resize();
   resetCamera();
-  setFrame(0);
+  // A link may name a frame to open on, paused: file.html#frame=45.
+  var start = /frame=(\d+)/.exec(location.hash);
+  setFrame(start ? Number(start[1]) : 0);
+  if (start) setPlaying(false);
   requestAnimationFrame(tick);
 })();

@@ -73,11 +73,22 @@ namespace DeltaInterpolator.Tests.Preview
             {
                 IPage page = await browser.NewPageAsync();
                 var problems = Watch(page, out List<string> requests);
-                await page.GotoAsync(new Uri(html).AbsoluteUri);
+                string url = new Uri(html).AbsoluteUri;
+                await page.GotoAsync(url);
                 await page.WaitForFunctionAsync("window.preview && window.preview.frame >= 3");
                 Assert.That(await page.Locator("#errors").IsHiddenAsync(), Is.True);
                 Assert.That(await page.Locator("#legend .chip").CountAsync(), Is.EqualTo(2));
-                Assert.That(problems, Is.Empty);
+
+                // A link can open the page paused on a frame.
+                IPage linked = await browser.NewPageAsync();
+                List<string> linkedProblems = Watch(linked, out List<string> linkedRequests);
+                await linked.GotoAsync(url + "#frame=17");
+                await linked.WaitForFunctionAsync("window.preview !== undefined");
+                await linked.WaitForTimeoutAsync(300);
+                Assert.That(await linked.Locator("#frame").TextContentAsync(), Is.EqualTo("17"));
+                Assert.That(await linked.EvaluateAsync<bool>("window.preview.playing"), Is.False);
+                Assert.That(problems.Concat(linkedProblems), Is.Empty);
+                Assert.That(requests.Concat(linkedRequests), Is.EqualTo(new[] { url, url }));
             }
             finally
             {
@@ -109,12 +120,36 @@ namespace DeltaInterpolator.Tests.Preview
             {
                 string asked = Path.Combine(_folder, "sheet.png");
                 Assert.That(ContactSheet.OutputPathFor(asked), Is.EqualTo(Path.Combine(_folder, "sheet.svg")));
-                string written = ContactSheet.Write(scene, asked);
+                string written = ContactSheet.Write(scene, asked, false, out string? fallback);
                 Assert.That(written, Is.EqualTo(Path.Combine(_folder, "sheet.svg")));
+                Assert.That(fallback, Does.StartWith("no Chromium found").And.Contain("sheet.svg instead of"));
                 Assert.That(File.Exists(asked), Is.False);
                 string svg = File.ReadAllText(written);
                 Assert.That(svg, Does.StartWith("<svg xmlns=\"http://www.w3.org/2000/svg\""));
                 Assert.That(System.Xml.Linq.XDocument.Parse(svg).Root!.Name.LocalName, Is.EqualTo("svg"), "well-formed XML");
+            }
+            finally
+            {
+                Environment.SetEnvironmentVariable("INBETWEEN_CHROMIUM", previous.Length == 0 ? null : previous);
+            }
+        }
+
+        [Test]
+        public void WriteFallsBackToSvgWhenChromiumFailsToStart()
+        {
+            RequireChromium();
+            MotionClip walker = PreviewMotion.Walker(30);
+            PreviewScene scene = PreviewScene.FromClips("walker", new[] { ("a", walker) });
+            string previous = Environment.GetEnvironmentVariable("INBETWEEN_CHROMIUM") ?? "";
+            Environment.SetEnvironmentVariable("INBETWEEN_CHROMIUM", "/bin/false");
+            try
+            {
+                string asked = Path.Combine(_folder, "sheet.png");
+                string written = ContactSheet.Write(scene, asked, false, out string? fallback);
+                Assert.That(written, Is.EqualTo(Path.Combine(_folder, "sheet.svg")));
+                Assert.That(fallback, Does.StartWith("Chromium (/bin/false) failed:").And.EndWith("sheet.svg instead of " + asked));
+                Assert.That(File.Exists(asked), Is.False);
+                Assert.That(File.ReadAllText(written), Does.StartWith("<svg"));
             }
             finally
             {
