@@ -192,26 +192,27 @@ namespace DeltaInterpolator.Cli.Verbs
             string title = Path.GetFileName(requests[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
             PreviewScene scene = PreviewScene.FromClips(title, clips, sceneKeys, truth != null ? 0 : -1);
             PreviewWriter.WriteHtml(scene, htmlPath);
-            AnsiConsole.MarkupLine(Markup.Escape(string.Format(
+            Console.WriteLine(string.Format(
                 CultureInfo.InvariantCulture,
-                "wrote {0} ({1:0} KB): {2} tracks, {3} frames at {4:0.##} fps, {5} key frames",
+                "wrote {0} ({1:0} KB): {2} track{6}, {3} frames at {4:0.##} fps, {5} key frames",
                 htmlPath,
                 new FileInfo(htmlPath).Length / 1024.0,
                 scene.Tracks.Count,
                 scene.FrameCount,
                 1 / scene.FrameTime,
-                scene.KeyFrames.Count)));
+                scene.KeyFrames.Count,
+                scene.Tracks.Count == 1 ? "" : "s"));
             if (scene.GroundTruthTrack >= 0)
             {
                 for (int t = 0; t < scene.Tracks.Count; t++)
                 {
                     if (t == scene.GroundTruthTrack) continue;
-                    AnsiConsole.MarkupLine(Markup.Escape(string.Format(
+                    Console.WriteLine(string.Format(
                         CultureInfo.InvariantCulture,
                         "  {0}: mean joint position error {1:0.###} (data units) {2}",
                         scene.Tracks[t].Name,
                         scene.MeanErrorBetweenKeys(t),
-                        scene.KeyFrames.Count > 0 ? "on frames between keys" : "over all frames")));
+                        scene.KeyFrames.Count > 0 ? "on frames between keys" : "over all frames"));
                 }
             }
 
@@ -228,7 +229,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     written = ContactSheet.Write(scene, pngPath, force, out fallback);
                 }
 
-                AnsiConsole.MarkupLine(Markup.Escape(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0)));
+                Console.WriteLine(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0));
             }
 
             return 0;
