@@ -106,7 +106,7 @@ namespace DeltaInterpolator.Preview
         /// <param name="clips">Named clips, in the order they are shown.</param>
         /// <param name="keyFrames">Key frame indices (or null).</param>
         /// <param name="groundTruthTrack">Index of the ground-truth clip, or −1.</param>
-        /// <exception cref="ArgumentException">The clips' skeletons differ in joints or parents.</exception>
+        /// <exception cref="ArgumentException">The clips' skeletons differ in joints or parents, or their frame rates differ.</exception>
         public static PreviewScene FromClips(string title, IReadOnlyList<(string Name, MotionClip Clip)> clips, IReadOnlyList<int>? keyFrames = null, int groundTruthTrack = -1)
         {
             if (clips == null || clips.Count == 0) throw new ArgumentException("a scene needs at least one clip", nameof(clips));
@@ -118,6 +118,12 @@ namespace DeltaInterpolator.Preview
                 if (difference != null)
                 {
                     throw new ArgumentException($"clip '{name}': {difference}", nameof(clips));
+                }
+
+                double frameTime = clips[0].Clip.FrameTime;
+                if (Math.Abs(clip.FrameTime - frameTime) > 1e-6 * frameTime)
+                {
+                    throw new ArgumentException($"clip '{name}': {1 / clip.FrameTime:0.###} fps where the first has {1 / frameTime:0.###} fps; expected one frame rate (resample first)", nameof(clips));
                 }
 
                 tracks.Add(PreviewTrack.FromClip(name, clip));

@@ -66,6 +66,8 @@ namespace DeltaInterpolator.Tests.Preview
             var other = new MotionClip(new Skeleton(names, walker.Skeleton.Parents, walker.Skeleton.OffsetSpan.ToArray()), 10, walker.FrameTime, walker.LocalPositions, walker.LocalRotations);
             var e = Assert.Throws<ArgumentException>(() => PreviewScene.FromClips("x", new[] { ("a", walker), ("b", other) }));
             Assert.That(e!.Message, Does.Contain("joint 3 is 'Skull' where the first has 'Head'"));
+            var e2 = Assert.Throws<ArgumentException>(() => PreviewScene.FromClips("x", new[] { ("a", walker), ("b", PreviewMotion.Walker(10, 1.0 / 120)) }));
+            Assert.That(e2!.Message, Does.Contain("120 fps where the first has 30 fps"));
             Assert.Throws<ArgumentOutOfRangeException>(() => PreviewScene.FromClips("x", new[] { ("a", walker) }, new[] { 0, 10 }));
             Assert.Throws<ArgumentException>(() => PreviewScene.FromClips("x", new[] { ("a", walker) }, new[] { 5, 5 }));
             Assert.Throws<ArgumentOutOfRangeException>(() => PreviewScene.FromClips("x", new[] { ("a", walker) }, null, 1));
