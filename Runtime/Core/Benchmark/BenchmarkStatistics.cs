@@ -70,7 +70,7 @@ namespace DeltaInterpolator.Core.Benchmark
         {
             if (hierarchy.JointCount != JointCount)
             {
-                throw new DataFormatException(Source, 1, $"the statistics are for {JointCount} joints but {hierarchySource} has {hierarchy.JointCount}", "expected statistics computed for the same skeleton");
+                throw new DataFormatException(Source, $"the statistics are for {JointCount} joints but {hierarchySource} has {hierarchy.JointCount}", "expected statistics computed for the same skeleton");
             }
 
             if (JointNames != null)
@@ -79,7 +79,7 @@ namespace DeltaInterpolator.Core.Benchmark
                 {
                     if (!string.Equals(JointNames[j], hierarchy.Names[j], StringComparison.Ordinal))
                     {
-                        throw new DataFormatException(Source, 1, $"joint {j} is '{JointNames[j]}' in the statistics but '{hierarchy.Names[j]}' in {hierarchySource}", "expected the same joints in the same order");
+                        throw new DataFormatException(Source, $"joint {j} is '{JointNames[j]}' in the statistics but '{hierarchy.Names[j]}' in {hierarchySource}", "expected the same joints in the same order");
                     }
                 }
             }
@@ -187,7 +187,7 @@ namespace DeltaInterpolator.Core.Benchmark
                 MotionClip clip = clips[c].Motion;
                 if (!clip.Skeleton.HasSameHierarchy(first))
                 {
-                    throw new DataFormatException(clips[c].SourceName, 1, $"the skeleton differs from {clips[0].SourceName}'s", "expected every training file to have the same joints and parents");
+                    throw new DataFormatException(clips[c].SourceName, $"the skeleton differs from {clips[0].SourceName}'s", "expected every training file to have the same joints and parents");
                 }
 
                 for (int start = 0; start + window < clip.FrameCount; start += offset)
