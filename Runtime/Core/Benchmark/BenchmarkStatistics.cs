@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
+using DeltaInterpolator.Core.IO;
 using System.Text;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Json;
@@ -93,8 +94,10 @@ namespace DeltaInterpolator.Core.Benchmark
         /// (names), as in <c>train_stats_official.json</c>.
         /// </summary>
         /// <exception cref="DataFormatException">The file does not have that shape.</exception>
+        /// <exception cref="InputPathException">The path is missing or not a regular file.</exception>
         public static BenchmarkStatistics Load(string path)
         {
+            InputFile.Check(path, "a statistics JSON such as train_stats_official.json");
             string text = File.ReadAllText(path);
             JsonValue root = JsonValue.Parse(text, path);
             root.ExpectObject("the statistics file");

@@ -13,7 +13,11 @@ namespace DeltaInterpolator.Core.IO
             : base(path + ": " + problem + "; " + expected)
         {
             Path = path;
+            Problem = problem;
         }
+
+        /// <summary>What was wrong, e.g. <c>"is a directory"</c>.</summary>
+        public string Problem { get; }
 
         /// <summary>The input path as the user gave it.</summary>
         public string Path { get; }

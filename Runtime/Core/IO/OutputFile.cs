@@ -169,7 +169,7 @@ namespace DeltaInterpolator.Core.IO
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is NotSupportedException)
             {
-                throw new OutputPathException(shownPath, $"cannot write in the folder {folder} ({e.GetType().Name})", "expected a writable folder");
+                throw new OutputPathException(shownPath, $"cannot write in the folder {folder}", "expected a writable folder");
             }
             finally
             {
