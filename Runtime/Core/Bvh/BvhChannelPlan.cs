@@ -72,31 +72,36 @@ namespace DeltaInterpolator.Core.Bvh
         /// </summary>
         public void ApplyRow(double[] row, int frame, double[] positions, double[] rotations)
         {
+            // Locals, not fields, in the loop: the JIT keeps them in registers across the array stores.
             int jointCount = JointCount;
+            bool[] hasPosition = _hasPosition, hasRotation = _hasRotation;
+            int[] positionColumns = _positionColumns, rotationColumns = _rotationColumns;
+            double[] offsets = _offsets;
+            EulerOrder[] orders = _orders;
             int pBase = frame * jointCount * 3;
             int qBase = frame * jointCount * 4;
             for (int j = 0; j < jointCount; j++)
             {
                 int p = pBase + 3 * j;
-                if (_hasPosition[j])
+                if (hasPosition[j])
                 {
-                    positions[p] = row[_positionColumns[3 * j]];
-                    positions[p + 1] = row[_positionColumns[3 * j + 1]];
-                    positions[p + 2] = row[_positionColumns[3 * j + 2]];
+                    positions[p] = row[positionColumns[3 * j]];
+                    positions[p + 1] = row[positionColumns[3 * j + 1]];
+                    positions[p + 2] = row[positionColumns[3 * j + 2]];
                 }
                 else
                 {
-                    positions[p] = _offsets[3 * j];
-                    positions[p + 1] = _offsets[3 * j + 1];
-                    positions[p + 2] = _offsets[3 * j + 2];
+                    positions[p] = offsets[3 * j];
+                    positions[p + 1] = offsets[3 * j + 1];
+                    positions[p + 2] = offsets[3 * j + 2];
                 }
 
-                QuaternionD q = _hasRotation[j]
+                QuaternionD q = hasRotation[j]
                     ? Quaternions.FromEulerDegrees(
-                        row[_rotationColumns[3 * j]],
-                        row[_rotationColumns[3 * j + 1]],
-                        row[_rotationColumns[3 * j + 2]],
-                        _orders[j])
+                        row[rotationColumns[3 * j]],
+                        row[rotationColumns[3 * j + 1]],
+                        row[rotationColumns[3 * j + 2]],
+                        orders[j])
                     : QuaternionD.Identity;
                 int qi = qBase + 4 * j;
                 rotations[qi] = q.W;

@@ -295,7 +295,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string python = Environment.GetEnvironmentVariable("DELTAINTERP_PYTHON") ?? "/usr/bin/python3";
             string config = Path.Combine(Path.GetTempPath(), $"deltainterp-speed-{Environment.ProcessId}.json");
             string output = Path.Combine(Path.GetTempPath(), $"deltainterp-speed-{Environment.ProcessId}.out.json");
-            File.WriteAllText(config, contract.DescriptionJson);
+            OutputFile.WriteAllText(config, contract.DescriptionJson);
             try
             {
                 AnsiConsole.MarkupLine(Markup.Escape($"Timing the same request in PyTorch eager ({python} -m deltainterp.speed, {threads} thread(s), then the paper preset)..."));
