@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.IO;
 using Microsoft.ML.OnnxRuntime;
 using OrtElementType = Microsoft.ML.OnnxRuntime.Tensors.TensorElementType;
 
@@ -45,9 +46,16 @@ namespace DeltaInterpolator.OnnxRuntime
         public static OnnxRuntimeBackend Load(string path, OnnxRuntimeOptions? options = null)
         {
             options ??= new OnnxRuntimeOptions();
-            if (!File.Exists(path))
+            // Checked before ONNX Runtime opens it: a directory, named pipe or device is named as such
+            // (a named pipe would block the load forever).
+            try
             {
-                throw new ModelContractException(path, "the model file does not exist", "expected the path of an .onnx file exported by `python3 -m deltainterp export`");
+                InputFile.Check(path, "an .onnx file");
+            }
+            catch (InputPathException e)
+            {
+                string problem = e.Problem == "no such file" ? "the model file does not exist" : "the model path " + e.Problem;
+                throw new ModelContractException(path, problem, "expected the path of an .onnx file exported by `python3 -m deltainterp export`");
             }
 
             var sessionOptions = new SessionOptions

@@ -41,6 +41,11 @@ namespace DeltaInterpolator.Cli
                 WriteLine(e.Message);
                 return BadInput;
             }
+            catch (Core.IO.InputPathException e)
+            {
+                WriteLine(e.Message);
+                return BadInput;
+            }
             catch (UsageException e)
             {
                 WriteLine(e.Message);
@@ -58,7 +63,9 @@ namespace DeltaInterpolator.Cli
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
-                WriteLine($"{e.Message.TrimEnd('.')}; expected a readable file");
+                // Inputs and outputs are checked before any work, so this is a file system failure on the
+                // way (permissions changed, disk full, a file vanished): say what the system said.
+                WriteLine($"inbetween: {e.Message.TrimEnd('.')}; expected readable inputs and writable outputs (check permissions and free space)");
                 return BadInput;
             }
             catch (Exception e)
@@ -68,10 +75,13 @@ namespace DeltaInterpolator.Cli
             }
         }
 
-        /// <summary>Writes one line to stderr.</summary>
+        /// <summary>
+        /// Writes one line to stderr, made safe for the terminal: line breaks become spaces, other control
+        /// characters from file contents are escaped and an overlong line is clipped (<see cref="TerminalText"/>).
+        /// </summary>
         public static void WriteLine(string line)
         {
-            Console.Error.WriteLine(line.Replace('\n', ' ').Replace("\r", ""));
+            Console.Error.WriteLine(TerminalText.Safe(line.Replace("\r\n", " ").Replace('\n', ' '), TerminalText.LineLength));
         }
     }
 }

@@ -1,5 +1,6 @@
 using System;
 using System.CommandLine;
+using System.IO;
 using System.Linq;
 using DeltaInterpolator.Cli.Verbs;
 
@@ -51,6 +52,36 @@ namespace DeltaInterpolator.Cli
 
             var invocation = new InvocationConfiguration { EnableDefaultExceptionHandler = false };
             return CliErrors.Guard(() => parse.Invoke(invocation));
+        }
+
+        /// <summary>
+        /// Runs the tool in this process with its standard output and error going to the given writers,
+        /// as the shell would see them (plain text, no colours): the entry point of the CLI tests. The
+        /// console is process-wide, so calls must not overlap.
+        /// </summary>
+        public static int Run(string[] args, TextWriter stdout, TextWriter stderr)
+        {
+            TextWriter oldOut = Console.Out, oldError = Console.Error;
+            Spectre.Console.IAnsiConsole oldConsole = Spectre.Console.AnsiConsole.Console;
+            Console.SetOut(stdout);
+            Console.SetError(stderr);
+            Spectre.Console.AnsiConsole.Console = Spectre.Console.AnsiConsole.Create(new Spectre.Console.AnsiConsoleSettings
+            {
+                Out = new Spectre.Console.AnsiConsoleOutput(stdout),
+                Ansi = Spectre.Console.AnsiSupport.No,
+                ColorSystem = Spectre.Console.ColorSystemSupport.NoColors,
+                Interactive = Spectre.Console.InteractionSupport.No,
+            });
+            try
+            {
+                return Main(args);
+            }
+            finally
+            {
+                Console.SetOut(oldOut);
+                Console.SetError(oldError);
+                Spectre.Console.AnsiConsole.Console = oldConsole;
+            }
         }
     }
 }

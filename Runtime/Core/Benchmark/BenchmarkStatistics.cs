@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
+using DeltaInterpolator.Core.IO;
 using System.Text;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Json;
@@ -70,7 +71,7 @@ namespace DeltaInterpolator.Core.Benchmark
         {
             if (hierarchy.JointCount != JointCount)
             {
-                throw new DataFormatException(Source, 1, $"the statistics are for {JointCount} joints but {hierarchySource} has {hierarchy.JointCount}", "expected statistics computed for the same skeleton");
+                throw new DataFormatException(Source, $"the statistics are for {JointCount} joints but {hierarchySource} has {hierarchy.JointCount}", "expected statistics computed for the same skeleton");
             }
 
             if (JointNames != null)
@@ -79,7 +80,7 @@ namespace DeltaInterpolator.Core.Benchmark
                 {
                     if (!string.Equals(JointNames[j], hierarchy.Names[j], StringComparison.Ordinal))
                     {
-                        throw new DataFormatException(Source, 1, $"joint {j} is '{JointNames[j]}' in the statistics but '{hierarchy.Names[j]}' in {hierarchySource}", "expected the same joints in the same order");
+                        throw new DataFormatException(Source, $"joint {j} is '{JointNames[j]}' in the statistics but '{hierarchy.Names[j]}' in {hierarchySource}", "expected the same joints in the same order");
                     }
                 }
             }
@@ -93,8 +94,10 @@ namespace DeltaInterpolator.Core.Benchmark
         /// (names), as in <c>train_stats_official.json</c>.
         /// </summary>
         /// <exception cref="DataFormatException">The file does not have that shape.</exception>
+        /// <exception cref="InputPathException">The path is missing or not a regular file.</exception>
         public static BenchmarkStatistics Load(string path)
         {
+            InputFile.Check(path, "a statistics JSON such as train_stats_official.json");
             string text = File.ReadAllText(path);
             JsonValue root = JsonValue.Parse(text, path);
             root.ExpectObject("the statistics file");
@@ -187,7 +190,7 @@ namespace DeltaInterpolator.Core.Benchmark
                 MotionClip clip = clips[c].Motion;
                 if (!clip.Skeleton.HasSameHierarchy(first))
                 {
-                    throw new DataFormatException(clips[c].SourceName, 1, $"the skeleton differs from {clips[0].SourceName}'s", "expected every training file to have the same joints and parents");
+                    throw new DataFormatException(clips[c].SourceName, $"the skeleton differs from {clips[0].SourceName}'s", "expected every training file to have the same joints and parents");
                 }
 
                 for (int start = 0; start + window < clip.FrameCount; start += offset)

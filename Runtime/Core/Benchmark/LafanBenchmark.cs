@@ -48,7 +48,8 @@ namespace DeltaInterpolator.Core.Benchmark
         /// <param name="options">Window layout; <see cref="BenchmarkOptions.Validate"/> is called.</param>
         /// <param name="progress">Receives one report per window.</param>
         /// <exception cref="ArgumentException">Bad options or no windows.</exception>
-        /// <exception cref="DataFormatException">Statistics and test files disagree on the skeleton.</exception>
+        /// <exception cref="DataFormatException">Statistics and test files disagree on the skeleton, or a
+        /// test file's values make a metric that is not a finite number (the message names file and window).</exception>
         public static BenchmarkReport Run(
             IReadOnlyList<BvhAnimation> testClips,
             BenchmarkStatistics statistics,
@@ -104,7 +105,7 @@ namespace DeltaInterpolator.Core.Benchmark
             {
                 if (!animation.Skeleton.HasSameHierarchy(skeleton))
                 {
-                    throw new DataFormatException(animation.SourceName, 1, $"the skeleton differs from {testClips[0].SourceName}'s", "expected every test file to have the same joints and parents");
+                    throw new DataFormatException(animation.SourceName, $"the skeleton differs from {testClips[0].SourceName}'s", "expected every test file to have the same joints and parents");
                 }
 
                 MotionClip clip = animation.Motion;
@@ -138,10 +139,21 @@ namespace DeltaInterpolator.Core.Benchmark
                             Span<double> pr = predictedRotations.AsSpan(0, rotLen);
                             ForwardKinematics.Compute(skeleton, n, transition.RootPositions, transition.LocalRotations, pp, pr);
                             MetricTotals t = totals[m][l];
-                            t.L2QSum += TransitionMetrics.SumL2Q(pr, tr, n, jointCount);
-                            t.L2PSum += TransitionMetrics.SumL2P(pp, tp, n, jointCount, std);
+                            double l2q = TransitionMetrics.SumL2Q(pr, tr, n, jointCount);
+                            double l2p = TransitionMetrics.SumL2P(pp, tp, n, jointCount, std);
+                            t.L2QSum += l2q;
+                            t.L2PSum += l2p;
                             t.FrameCount += n;
                             npss[l].Accumulate(pr, ref t.NpssWeightedSum, ref t.NpssWeightSum);
+                            if (!double.IsFinite(l2q) || !double.IsFinite(l2p) || !double.IsFinite(t.NpssWeightedSum) || !double.IsFinite(t.NpssWeightSum))
+                            {
+                                // Finite but huge motion values (1e308) overflow in forward kinematics;
+                                // a NaN must never reach a table or a file.
+                                string metric = !double.IsFinite(l2q) ? "L2Q" : !double.IsFinite(l2p) ? "L2P" : "NPSS";
+                                throw new DataFormatException(animation.SourceName,
+                                    $"{names[m]} {metric} of the window at frame {start} (length {n}) is not a finite number",
+                                    "expected motion values small enough for forward kinematics and the metrics (e.g. |value| < 1e100)");
+                            }
                         }
                     }
 

@@ -2,6 +2,7 @@ using System;
 using System.Globalization;
 using System.IO;
 using System.Text;
+using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -17,14 +18,24 @@ namespace DeltaInterpolator.Core.Bvh
     {
         private const double RadiansToDegrees = 180.0 / Math.PI;
 
-        /// <summary>Writes <paramref name="animation"/> to the file at <paramref name="path"/>.</summary>
+        /// <summary>
+        /// Writes <paramref name="animation"/> to the file at <paramref name="path"/> through
+        /// <see cref="OutputFile.Write"/>: a temporary file beside it, renamed into place when complete, so a
+        /// failure leaves an existing file byte-identical. Call <see cref="OutputFile.Check(string, bool, string[])"/>
+        /// first to refuse an existing file without the user's consent or a path that is also an input.
+        /// </summary>
         /// <param name="animation">What to write.</param>
-        /// <param name="path">Destination file; overwritten.</param>
+        /// <param name="path">Destination file; replaced when complete.</param>
         /// <param name="newLine">Line ending, "\n" (default) or "\r\n" (as LaFAN1 files have).</param>
         public static void Write(BvhAnimation animation, string path, string newLine = "\n")
         {
-            using var stream = new StreamWriter(path, false, new UTF8Encoding(false));
-            Write(animation, stream, newLine);
+            OutputFile.Write(path, stream =>
+            {
+                using (var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, true))
+                {
+                    Write(animation, writer, newLine);
+                }
+            });
         }
 
         /// <summary>Writes <paramref name="animation"/> as BVH text to <paramref name="writer"/>.</summary>

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Runtime.InteropServices;
 using System.Text;
 
 namespace DeltaInterpolator.Core.IO
@@ -14,8 +15,9 @@ namespace DeltaInterpolator.Core.IO
     {
         /// <summary>
         /// Refuses, with <see cref="OutputPathException"/>, a target that cannot or must not be written: a
-        /// folder or other non-file, an existing file without <paramref name="force"/>, one of the
-        /// <paramref name="inputs"/>, or a place whose folder is not writable. Call it before any long work.
+        /// folder, a named pipe, device or socket, an existing file without <paramref name="force"/>, one of
+        /// the <paramref name="inputs"/> (by path, or by identity through links), or a place whose folder is
+        /// not writable. Never opens the target (so a named pipe cannot block it). Call it before any long work.
         /// </summary>
         /// <param name="path">The output path as the user gave it.</param>
         /// <param name="force">True when the user allowed replacing an existing file (<c>--force</c>).</param>
@@ -29,20 +31,27 @@ namespace DeltaInterpolator.Core.IO
             }
 
             string full = Path.GetFullPath(path);
+            FileNode target = FileNode.Of(full);
             foreach (string? input in inputs)
             {
-                if (input != null && SamePath(full, input))
+                if (input != null && IsSameFile(full, target, input))
                 {
                     throw new OutputPathException(path, "is also an input of this command", "expected a different output path (an output never replaces an input)");
                 }
             }
 
-            if (Directory.Exists(full))
+            if (target.Kind == FileNodeKind.Directory)
             {
                 throw new OutputPathException(path, "is a directory", "expected a file path");
             }
 
-            if (File.Exists(full) && !force)
+            if (target.Kind != FileNodeKind.Missing && target.Kind != FileNodeKind.RegularFile)
+            {
+                // Renaming over a pipe or device would replace the node, not write to it; refuse either way.
+                throw new OutputPathException(path, FileNode.Describe(target.Kind), "expected a path for a regular file");
+            }
+
+            if (target.Kind == FileNodeKind.RegularFile && !force)
             {
                 throw new OutputPathException(path, "already exists", "expected a new path, or --force to replace it");
             }
@@ -107,7 +116,12 @@ namespace DeltaInterpolator.Core.IO
             Write(path, s => s.Write(bytes, 0, bytes.Length));
         }
 
-        private static bool SamePath(string fullOutput, string input)
+        /// <summary>
+        /// True when <paramref name="input"/> names the output: the same full path (ignoring case where the
+        /// file system usually does: Windows, macOS), or — for existing files — the same file by device and
+        /// inode, which catches symbolic links, hard links and other spellings.
+        /// </summary>
+        private static bool IsSameFile(string fullOutput, FileNode output, string input)
         {
             string fullInput;
             try
@@ -119,7 +133,13 @@ namespace DeltaInterpolator.Core.IO
                 return false;
             }
 
-            return string.Equals(fullOutput.TrimEnd(Path.DirectorySeparatorChar), fullInput.TrimEnd(Path.DirectorySeparatorChar), StringComparison.Ordinal);
+            bool ignoreCase = RuntimeInformation.IsOSPlatform(OSPlatform.Windows) || RuntimeInformation.IsOSPlatform(OSPlatform.OSX);
+            if (string.Equals(fullOutput.TrimEnd(Path.DirectorySeparatorChar), fullInput.TrimEnd(Path.DirectorySeparatorChar), ignoreCase ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal))
+            {
+                return true;
+            }
+
+            return output.Kind != FileNodeKind.Missing && output.IsSameFileAs(FileNode.Of(fullInput));
         }
 
         private static string NearestExistingFolder(string folder, string shownPath)
@@ -149,7 +169,7 @@ namespace DeltaInterpolator.Core.IO
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is NotSupportedException)
             {
-                throw new OutputPathException(shownPath, $"cannot write in the folder {folder} ({e.GetType().Name})", "expected a writable folder");
+                throw new OutputPathException(shownPath, $"cannot write in the folder {folder}", "expected a writable folder");
             }
             finally
             {

@@ -85,6 +85,16 @@ namespace DeltaInterpolator.Core.Rotations
         }
 
         /// <summary>
+        /// Euler angles in degrees (as BVH motion lines hold them, in the order's value order) to a
+        /// quaternion: <see cref="FromEuler"/> of the angles times π/180.
+        /// </summary>
+        public static QuaternionD FromEulerDegrees(double d0, double d1, double d2, EulerOrder order)
+        {
+            const double degreesToRadians = Math.PI / 180.0;
+            return FromEuler(d0 * degreesToRadians, d1 * degreesToRadians, d2 * degreesToRadians, order);
+        }
+
+        /// <summary>
         /// Euler angles (radians, in the order's value order) to a quaternion, composed intrinsically:
         /// q = q_{a0}(e0) ⊗ q_{a1}(e1) ⊗ q_{a2}(e2), as BVH and the official code do.
         /// </summary>

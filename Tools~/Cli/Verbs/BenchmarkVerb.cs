@@ -11,6 +11,7 @@ using DeltaInterpolator.Core.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Metrics;
 using DeltaInterpolator.OnnxRuntime;
 using Spectre.Console;
@@ -73,9 +74,11 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<string?> _saveStats = new Option<string?>("--save-stats")
         {
-            Description = "When the statistics are computed from the training files, save them to this JSON file (reusable with --stats).",
+            Description = "Save the statistics computed from the training files to this JSON file (reusable with --stats; not with --stats).",
             HelpName = "OUT",
         };
+
+        private readonly OutputOptions _output = new OutputOptions();
 
         /// <inheritdoc />
         public Command CreateCommand()
@@ -89,7 +92,9 @@ namespace DeltaInterpolator.Cli.Verbs
                 "  L2Q  mean distance of global quaternions (all joints' components at once)\n" +
                 "  L2P  mean distance of global positions, each coordinate divided by the statistics' std\n" +
                 "  NPSS power-spectrum distance of global quaternions (Gopalakrishnan et al. 2019)\n" +
-                "Lower is better. Example:\n" +
+                "Lower is better. A result that is not a finite number (motion values too large, e.g. 1e308) is an error (exit 2).\n" +
+                OutputOptions.HelpText + "\n" +
+                "Example:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json");
             command.Options.Add(_data);
             command.Options.Add(_stats);
@@ -100,6 +105,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_saveStats);
             command.Options.Add(_model.Model);
             command.Options.Add(_model.Threads);
+            _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -127,7 +133,8 @@ namespace DeltaInterpolator.Cli.Verbs
 
             if (!Directory.Exists(data))
             {
-                throw new CliErrors.UsageException($"{data}: no such directory; expected the folder of LaFAN1 BVH files (e.g. ../shared/data/lafan1)");
+                string what = File.Exists(data) ? "is a file, not a directory" : "no such directory";
+                throw new CliErrors.UsageException($"{data}: {what}; expected the folder of LaFAN1 BVH files (e.g. ../shared/data/lafan1)");
             }
 
             IReadOnlyList<string> testFiles = LafanDataset.FindFiles(data, LafanDataset.TestSubjects);
@@ -136,13 +143,37 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"{data}: no *_subject5.bvh files; expected the LaFAN1 test files (subject 5) in --data");
             }
 
-            if (statsPath != null && !File.Exists(statsPath))
+            if (statsPath != null)
             {
-                throw new CliErrors.UsageException($"{statsPath}: no such file; expected a statistics JSON such as train_stats_official.json");
+                InputFile.Check(statsPath, "a statistics JSON such as train_stats_official.json");
+                if (saveStats != null)
+                {
+                    throw new CliErrors.UsageException($"inbetween benchmark: --save-stats {saveStats} with --stats {statsPath}; expected one of them (--save-stats keeps statistics computed from the training files)");
+                }
             }
 
             string? modelPath = parse.GetValue(_model.Model);
+            if (modelPath != null) InputFile.Check(modelPath, "an exported model NAME.onnx (see Documentation~/model-contract.md)");
             OnnxRuntimeOptions runtimeOptions = _model.RuntimeOptions(parse);
+
+            // Outputs are checked before any work: never an input, never an existing file without --force.
+            IReadOnlyList<string> trainingFiles = LafanDataset.FindFiles(data, LafanDataset.TrainingSubjects);
+            var inputs = new List<string?> { data, statsPath, modelPath };
+            if (modelPath != null)
+            {
+                inputs.Add(OnnxRuntimeInbetweener.LazyPath(modelPath, "keys"));
+                inputs.Add(OnnxRuntimeInbetweener.LazyPath(modelPath, "frame"));
+            }
+
+            inputs.AddRange(testFiles);
+            inputs.AddRange(trainingFiles);
+            if (jsonPath != null && saveStats != null && string.Equals(Path.GetFullPath(jsonPath), Path.GetFullPath(saveStats), StringComparison.Ordinal))
+            {
+                throw new CliErrors.UsageException($"inbetween benchmark: --json and --save-stats both name {jsonPath}; expected two different files");
+            }
+
+            if (jsonPath != null) _output.Check(parse, jsonPath, inputs.Concat(new[] { saveStats }));
+            if (saveStats != null) _output.Check(parse, saveStats, inputs.Concat(new[] { jsonPath }));
             var methods = new List<IInbetweener> { new ZeroVelocityBaseline(), new SlerpBaseline() };
             using Inbetweener? model = modelPath == null ? null : OnnxRuntimeInbetweener.Load(modelPath, runtimeOptions);
             if (model != null)
@@ -180,7 +211,6 @@ namespace DeltaInterpolator.Cli.Verbs
                     else
                     {
                         var sw = Stopwatch.StartNew();
-                        IReadOnlyList<string> trainingFiles = LafanDataset.FindFiles(data, LafanDataset.TrainingSubjects);
                         if (trainingFiles.Count == 0)
                         {
                             throw new CliErrors.UsageException($"{data}: no *_subject1..4.bvh training files to compute statistics from; expected them in --data, or pass --stats FILE");
@@ -188,6 +218,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
                         trainingFileCount = trainingFiles.Count;
                         BvhAnimation[] training = LafanDataset.ReadAll(trainingFiles, reporter, "Reading training files");
+                        RequireWindows(training, new BenchmarkOptions { Window = 50, Offset = 20 }, data, "training files (subjects 1-4) for the statistics", "pass --stats FILE");
                         statistics = BenchmarkStatistics.ComputeFromTraining(
                             training, options, 50, 20,
                             $"computed from {training.Length} training files in {data} (subjects 1-4, windows 50/20)", reporter);
@@ -197,6 +228,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     var read = Stopwatch.StartNew();
                     testClips = LafanDataset.ReadAll(testFiles, reporter, "Reading test files");
                     readSeconds = read.Elapsed.TotalSeconds;
+                    RequireWindows(testClips, options, data, "test files (subject 5)", "a shorter --window");
                     // Refuse a model for another skeleton before evaluating anything.
                     model?.Contract.CheckSkeleton(testClips[0].Skeleton, testFiles[0]);
                     var eval = Stopwatch.StartNew();
@@ -204,9 +236,11 @@ namespace DeltaInterpolator.Cli.Verbs
                     evalSeconds = eval.Elapsed.TotalSeconds;
                 });
 
-            if (saveStats != null && statsPath == null)
+            RequireFinite(report!, data);
+            if (saveStats != null)
             {
-                File.WriteAllText(saveStats, statistics!.ToJson());
+                RequireFinite(statistics!, data);
+                OutputFile.WriteAllText(saveStats, statistics!.ToJson());
             }
 
             PrintTables(report!);
@@ -214,6 +248,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string statsLine = statsPath != null
                 ? $"statistics: {statsPath}"
                 : $"statistics: computed from {trainingFileCount} training files in {statsSeconds:0.00} s{(saveStats != null ? ", saved to " + saveStats : "")}";
+            statsPath = statsPath == null ? null : TerminalText.Safe(statsPath, TerminalText.LineLength);
             AnsiConsole.MarkupLine(Markup.Escape(
                 $"{report!.WindowCount} windows of {options.Window} frames every {options.Offset} from {testClips!.Length} test files ({frames:N0} frames); {statsLine}"));
             AnsiConsole.MarkupLine(Markup.Escape(
@@ -226,6 +261,50 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             return 0;
+        }
+
+        /// <summary>Refuses clips that hold no window (user input, not a bug: short files or a huge --window).</summary>
+        private static void RequireWindows(IReadOnlyList<BvhAnimation> clips, BenchmarkOptions options, string data, string what, string remedy)
+        {
+            if (LafanBenchmark.CountWindows(clips, options) > 0) return;
+            int longest = clips.Count == 0 ? 0 : clips.Max(c => c.Motion.FrameCount);
+            throw new CliErrors.UsageException(
+                $"{data}: the {clips.Count} {what} are shorter than one window of {options.Window} frames (the longest has {longest:N0} frames; a window needs more than {options.Window}); expected longer files or {remedy}");
+        }
+
+        /// <summary>Refuses a report with a value that is not a finite number: never a NaN in a table or a file.</summary>
+        private static void RequireFinite(BenchmarkReport report, string data)
+        {
+            for (int m = 0; m < report.MethodIds.Count; m++)
+            {
+                foreach (int n in report.Lengths)
+                {
+                    MetricTotals t = report.Get(report.MethodIds[m], n);
+                    foreach ((string metric, double value) in new[] { ("L2Q", t.L2Q), ("L2P", t.L2P), ("NPSS", t.Npss) })
+                    {
+                        if (!double.IsFinite(value))
+                        {
+                            throw new CliErrors.UsageException(
+                                $"{data}: {report.MethodNames[m]} {metric} at length {n} is {value.ToString(CultureInfo.InvariantCulture)}; expected finite results (motion values small enough for the metrics, e.g. |value| < 1e100)");
+                        }
+                    }
+                }
+            }
+        }
+
+        /// <summary>Refuses statistics that are not finite before they are saved.</summary>
+        private static void RequireFinite(BenchmarkStatistics statistics, string data)
+        {
+            foreach (double[] values in new[] { statistics.Mean, statistics.StandardDeviation, statistics.Offsets })
+            {
+                foreach (double v in values)
+                {
+                    if (!double.IsFinite(v))
+                    {
+                        throw new CliErrors.UsageException($"{data}: the statistics computed from the training files hold {v.ToString(CultureInfo.InvariantCulture)}; expected finite motion values in the training files");
+                    }
+                }
+            }
         }
 
         private static IReadOnlyList<int> ParseLengths(string text)
@@ -274,7 +353,12 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private static void WriteJson(string path, BenchmarkReport report, string statsSource)
         {
-            using var stream = File.Create(path);
+            OutputFile.Write(path, stream => WriteJson(stream, report, statsSource));
+        }
+
+        /// <summary>The results as JSON (a throw half-way leaves the target untouched: see <see cref="OutputFile.Write"/>).</summary>
+        internal static void WriteJson(Stream stream, BenchmarkReport report, string statsSource)
+        {
             using var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true });
             w.WriteStartObject();
             w.WriteNumber("windows", report.WindowCount);

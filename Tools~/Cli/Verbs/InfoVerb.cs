@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Skeletons;
 using Spectre.Console;
 
@@ -23,7 +24,8 @@ namespace DeltaInterpolator.Cli.Verbs
             var command = new Command(
                 "info",
                 "Show a BVH file's joints (parent, channels, offset), frame count, frame time, duration, size and read speed.\n" +
-                "A malformed file is reported as FILE:LINE: what was wrong; what was expected (exit status 2).\n" +
+                "A malformed file is reported as FILE:LINE: what was wrong; what was expected (exit status 2). Names are shown with\n" +
+                "control characters escaped and clipped to " + TerminalText.NameLength + " characters; a table lists at most " + MaxJointRows + " joints.\n" +
                 "Example:\n  inbetween info ../shared/data/lafan1/walk4_subject1.bvh");
             command.Arguments.Add(_file);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse.GetValue(_file)!)));
@@ -32,10 +34,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private static int Run(string path)
         {
-            if (!File.Exists(path))
-            {
-                throw new CliErrors.UsageException($"{path}: no such file; expected a .bvh file");
-            }
+            InputFile.Check(path, "a .bvh file");
 
             long bytes = new FileInfo(path).Length;
             var first = Stopwatch.StartNew();
@@ -54,27 +53,38 @@ namespace DeltaInterpolator.Cli.Verbs
 
             Skeleton skeleton = animation.Skeleton;
             MotionClip motion = animation.Motion;
-            var joints = new Table().Border(TableBorder.Rounded).Title($"[bold]{Markup.Escape(Path.GetFileName(path))}[/]: {skeleton.JointCount} joints");
+            var joints = new Table().Border(TableBorder.Rounded).Title($"[bold]{Markup.Escape(TerminalText.Safe(Path.GetFileName(path), TerminalText.NameLength))}[/]: {skeleton.JointCount} joints");
             joints.AddColumn(new TableColumn("#").RightAligned());
             joints.AddColumn("Joint");
             joints.AddColumn("Parent");
             joints.AddColumn("Channels");
             joints.AddColumn(new TableColumn("Offset").RightAligned());
-            for (int j = 0; j < skeleton.JointCount; j++)
+            // Depths in one pass (parents come before children), so a deep file costs time in proportion to it.
+            var depths = new int[skeleton.JointCount];
+            for (int j = 1; j < skeleton.JointCount; j++) depths[j] = depths[skeleton.Parents[j]] + 1;
+            int shown = Math.Min(skeleton.JointCount, MaxJointRows);
+            for (int j = 0; j < shown; j++)
             {
                 int parent = skeleton.Parents[j];
-                string depth = new string(' ', 2 * Depth(skeleton, j));
+                // Indentation shows the tree up to a few levels; deeper joints say their depth instead of
+                // widening the table (a file nested 5,000 deep once made a 10,000-column table).
+                string depth = depths[j] <= MaxIndentedDepth ? new string(' ', 2 * depths[j]) : new string(' ', 2 * MaxIndentedDepth) + "(depth " + depths[j].ToString(CultureInfo.InvariantCulture) + ") ";
                 string offset = string.Format(CultureInfo.InvariantCulture, "{0,10:0.000} {1,10:0.000} {2,10:0.000}", skeleton.Offsets[3 * j], skeleton.Offsets[3 * j + 1], skeleton.Offsets[3 * j + 2]);
                 string endSites = animation.EndSites[j].Length > 0 ? " (+End Site)" : "";
                 joints.AddRow(
                     j.ToString(CultureInfo.InvariantCulture),
-                    Markup.Escape(depth + skeleton.Names[j] + endSites),
-                    parent < 0 ? "-" : Markup.Escape(skeleton.Names[parent]),
+                    Markup.Escape(depth + TerminalText.Safe(skeleton.Names[j], TerminalText.NameLength) + endSites),
+                    parent < 0 ? "-" : Markup.Escape(TerminalText.Safe(skeleton.Names[parent], TerminalText.NameLength)),
                     Markup.Escape(BvhChannels.Describe(animation.JointChannels[j])),
                     offset);
             }
 
             AnsiConsole.Write(joints);
+            if (shown < skeleton.JointCount)
+            {
+                AnsiConsole.MarkupLine(Markup.Escape($"(the first {shown:N0} of {skeleton.JointCount:N0} joints are listed)"));
+            }
+
             var summary = new Table().Border(TableBorder.Rounded).HideHeaders();
             summary.AddColumn("");
             summary.AddColumn("");
@@ -88,11 +98,10 @@ namespace DeltaInterpolator.Cli.Verbs
             return 0;
         }
 
-        private static int Depth(Skeleton skeleton, int joint)
-        {
-            int depth = 0;
-            for (int p = skeleton.Parents[joint]; p >= 0; p = skeleton.Parents[p]) depth++;
-            return depth;
-        }
+        /// <summary>Joints listed in the table; a file with more says how many were left out.</summary>
+        private const int MaxJointRows = 1000;
+
+        /// <summary>Nesting levels shown by indentation.</summary>
+        private const int MaxIndentedDepth = 12;
     }
 }

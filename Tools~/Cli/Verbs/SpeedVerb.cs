@@ -8,6 +8,7 @@ using System.Text.Json;
 using System.Text.Json.Nodes;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Kinematics;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.OnnxRuntime;
@@ -51,6 +52,8 @@ namespace DeltaInterpolator.Cli.Verbs
             Required = true,
         };
 
+        private readonly OutputOptions _output = new OutputOptions();
+
         /// <inheritdoc />
         public Command CreateCommand()
         {
@@ -64,12 +67,14 @@ namespace DeltaInterpolator.Cli.Verbs
                 "  allocation  managed bytes allocated per transition in steady state\n" +
                 "Each is the median and 95th percentile of many runs after a warm-up. With --pytorch the same request\n" +
                 "is timed in PyTorch eager on the same thread count (same architecture, and the paper's 1024-wide preset).\n" +
+                OutputOptions.HelpText + "\n" +
                 "Example:\n  inbetween speed --model Tests/Fixtures/tiny-model.onnx --threads 1 --pytorch --json out/speed.json");
             command.Options.Add(_model.Model);
             command.Options.Add(_model.Threads);
             command.Options.Add(_pytorch);
             command.Options.Add(_repeats);
             command.Options.Add(_json);
+            _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -88,6 +93,10 @@ namespace DeltaInterpolator.Cli.Verbs
             {
                 throw new CliErrors.UsageException($"{modelPath}: the shipped model is not there; expected it after export (python3 -m deltainterp export), or pass --model FILE.onnx");
             }
+
+            InputFile.Check(modelPath, "an exported model NAME.onnx (see Documentation~/model-contract.md)");
+            // The output is checked before the minutes of measuring, not after.
+            _output.Check(parse, jsonPath, new[] { modelPath, OnnxRuntimeInbetweener.LazyPath(modelPath, "keys"), OnnxRuntimeInbetweener.LazyPath(modelPath, "frame") });
 
             using Inbetweener model = OnnxRuntimeInbetweener.Load(modelPath, options);
             ModelContract contract = model.Contract;
@@ -172,9 +181,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 results["paper_pytorch_transition_ms"] = null;
             }
 
-            string? dir = Path.GetDirectoryName(Path.GetFullPath(jsonPath));
-            if (dir != null) Directory.CreateDirectory(dir);
-            File.WriteAllText(jsonPath, results.ToJsonString(new JsonSerializerOptions { WriteIndented = true }));
+            OutputFile.WriteAllText(jsonPath, results.ToJsonString(new JsonSerializerOptions { WriteIndented = true }));
             PrintSummary(results, pytorch != null);
             AnsiConsole.MarkupLine(Markup.Escape($"results written to {jsonPath}"));
             return 0;
@@ -288,7 +295,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string python = Environment.GetEnvironmentVariable("DELTAINTERP_PYTHON") ?? "/usr/bin/python3";
             string config = Path.Combine(Path.GetTempPath(), $"deltainterp-speed-{Environment.ProcessId}.json");
             string output = Path.Combine(Path.GetTempPath(), $"deltainterp-speed-{Environment.ProcessId}.out.json");
-            File.WriteAllText(config, contract.DescriptionJson);
+            OutputFile.WriteAllText(config, contract.DescriptionJson);
             try
             {
                 AnsiConsole.MarkupLine(Markup.Escape($"Timing the same request in PyTorch eager ({python} -m deltainterp.speed, {threads} thread(s), then the paper preset)..."));
