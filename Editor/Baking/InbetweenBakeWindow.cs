@@ -140,6 +140,17 @@ namespace DeltaInterpolator.Editor.Baking
                             return;
                         }
 
+                        (int min, int max) = contract.TrainingMissingFrames;
+                        IReadOnlyList<int> outside = keys.GapsOutside(min, max);
+                        if (outside.Count > 0 && !EditorUtility.DisplayDialog(
+                                "Gaps outside the trained range",
+                                $"{contract.Source} was trained on gaps of {min}–{max} frames; {clip.name} has gaps of {string.Join(", ", outside)} frames. The model will fill them, but it never saw such gaps: check the result, or move keys.",
+                                "Bake anyway",
+                                "Cancel"))
+                        {
+                            return;
+                        }
+
                         track = new KeyPoseTrack(skeleton, keys.FrameCount, rate, contract.UnitScale);
                         ClipSampler.SampleInto(track, character, bones, clip, keys.Frames, keys.Frames.Select(f => f / rate).ToList());
                         name = clip.name + " (in-betweened)";
@@ -147,6 +158,16 @@ namespace DeltaInterpolator.Editor.Baking
                     else
                     {
                         TransitionKeyPlan plan = TransitionKeyPlan.Create(_fromTime, _toTime, _pastFrames, _gapFrames, rate);
+                        (int min, int max) = contract.TrainingMissingFrames;
+                        if (max > 0 && (_gapFrames < min || _gapFrames > max) && !EditorUtility.DisplayDialog(
+                                "Gap outside the trained range",
+                                $"{contract.Source} was trained on gaps of {min}–{max} frames; this gap has {_gapFrames}. The model will fill it, but it never saw such a gap.",
+                                "Bake anyway",
+                                "Cancel"))
+                        {
+                            return;
+                        }
+
                         track = new KeyPoseTrack(skeleton, plan.FrameCount, rate, contract.UnitScale);
                         ClipSampler.SampleInto(track, character, bones, _fromClip!, Enumerable.Range(0, plan.PastFrames).ToList(), plan.FromTimes);
                         ClipSampler.SampleInto(track, character, bones, _toClip!, new[] { plan.TargetFrame }, new[] { plan.ToTime });

@@ -65,6 +65,24 @@ namespace DeltaInterpolator.Core.Clips
             throw new ArgumentOutOfRangeException(nameof(index), $"the clip has {n} gaps");
         }
 
+        /// <summary>
+        /// The lengths of the gaps outside a model's trained range of missing frames [<paramref name="min"/>,
+        /// <paramref name="max"/>], in gap order: such gaps still bake, but the model never saw them, so
+        /// the window warns before baking. Empty when the range is unknown (max ≤ 0).
+        /// </summary>
+        public IReadOnlyList<int> GapsOutside(int min, int max)
+        {
+            var outside = new List<int>();
+            if (max <= 0) return outside;
+            for (int g = 0; g < GapCount; g++)
+            {
+                int n = GapLength(g);
+                if (n < min || n > max) outside.Add(n);
+            }
+
+            return outside;
+        }
+
         /// <summary>The frame count of a clip that ends on the last key (last index + 1), or 0 without keys.</summary>
         public int FrameCount => Frames.Count == 0 ? 0 : Frames[Frames.Count - 1] + 1;
     }

@@ -27,6 +27,18 @@ namespace DeltaInterpolator.Tests.Clips
         }
 
         [Test]
+        public void GapsOutsideTheTrainedRangeAreListed()
+        {
+            // Gaps of 9, 4 and 14 frames against a model trained on 5–39: only the 4 is outside.
+            var curves = new List<IReadOnlyList<float>> { new[] { 0f, 1f / 3f, 0.5f, 1f } };
+            ClipKeyFrames keys = ClipKeyReader.Read(curves, 30, 1.0);
+
+            Assert.That(keys.GapsOutside(5, 39), Is.EqualTo(new[] { 4 }));
+            Assert.That(keys.GapsOutside(1, 10), Is.EqualTo(new[] { 14 }));
+            Assert.That(keys.GapsOutside(0, 0), Is.Empty, "unknown range");
+        }
+
+        [Test]
         public void KeysBetweenFramesAreRoundedAndCounted()
         {
             // 60 fps keys on a 30 fps model: 1/60 s is half a frame (rounds up), 0.1 s is frame 3 exactly.
