@@ -19,6 +19,7 @@ namespace DeltaInterpolator.Cli
             new BenchmarkVerb(),
             new InfoVerb(),
             new PreviewVerb(),
+            new PackVerb(),
             new SpeedVerb(),
         };
 
@@ -35,7 +36,8 @@ namespace DeltaInterpolator.Cli
                 "Reads BVH motion capture, runs the official LaFAN1 in-betweening benchmark and (later) neural models.\n\n" +
                 "Examples:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
-                "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n\n" +
+                "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n" +
+                "  inbetween pack --out out/release\n\n" +
                 "Run 'inbetween VERB --help' for a verb's options.");
             foreach (ICliVerb verb in Verbs) root.Subcommands.Add(verb.CreateCommand());
 

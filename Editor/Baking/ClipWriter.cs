@@ -1,0 +1,53 @@
+#nullable enable
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Clips;
+using UnityEditor;
+using UnityEngine;
+
+namespace DeltaInterpolator.Editor.Baking
+{
+    /// <summary>
+    /// Writes Core's <see cref="ClipCurve"/>s into a new <see cref="AnimationClip"/> asset, with Undo.
+    /// An existing asset is never replaced: the user is asked, and the clip is saved beside it under a
+    /// new name or not at all.
+    /// </summary>
+    internal static class ClipWriter
+    {
+        /// <summary>
+        /// Asks where to save, then creates the clip. Returns the clip, or null when the user cancelled.
+        /// </summary>
+        /// <param name="curves">The curves to write (paths relative to the animated GameObject).</param>
+        /// <param name="frameRate">The clip's sample rate (the model's rate).</param>
+        /// <param name="defaultName">File name offered in the save panel, without extension.</param>
+        public static AnimationClip? Save(IReadOnlyList<ClipCurve> curves, double frameRate, string defaultName)
+        {
+            string path = EditorUtility.SaveFilePanelInProject("Save baked clip", defaultName, "anim", "Where to save the clip with the in-betweens");
+            if (string.IsNullOrEmpty(path)) return null;
+            if (AssetDatabase.LoadAssetAtPath<Object>(path) != null)
+            {
+                string unique = AssetDatabase.GenerateUniqueAssetPath(path);
+                bool keep = EditorUtility.DisplayDialog(
+                    "Clip already exists",
+                    $"{path} already exists and will not be replaced. Save the baked clip as {unique} instead?",
+                    "Save as new clip",
+                    "Cancel");
+                if (!keep) return null;
+                path = unique;
+            }
+
+            var clip = new AnimationClip { frameRate = (float)frameRate };
+            foreach (ClipCurve c in curves)
+            {
+                var keys = new Keyframe[c.KeyCount];
+                for (int i = 0; i < keys.Length; i++) keys[i] = new Keyframe(c.Times[i], c.Values[i], c.InTangents[i], c.OutTangents[i]);
+                AnimationUtility.SetEditorCurve(clip, EditorCurveBinding.FloatCurve(c.Path, typeof(Transform), c.Property), new AnimationCurve(keys));
+            }
+
+            AssetDatabase.CreateAsset(clip, path);
+            Undo.RegisterCreatedObjectUndo(clip, "Bake in-betweens");
+            AssetDatabase.SaveAssets();
+            EditorGUIUtility.PingObject(clip);
+            return clip;
+        }
+    }
+}

@@ -1,0 +1,12 @@
+namespace Unity.InferenceEngine
+{
+    // source: inference:Runtime/Core/Backends/CPU/NativeTensorArray.cs
+    public enum DataType
+    {
+        Float,
+        Int,
+        Short,
+        Byte,
+        Custom
+    }
+}

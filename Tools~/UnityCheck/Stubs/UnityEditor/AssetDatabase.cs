@@ -1,0 +1,16 @@
+using UnityEngine;
+
+namespace UnityEditor
+{
+    // source: unity:Modules/AssetDatabase/Editor/ScriptBindings/AssetDatabase.bindings.cs
+    public partial class AssetDatabase
+    {
+        public static string GenerateUniqueAssetPath(string path) => throw null!;
+
+        public static void CreateAsset(Object asset, string path) => throw null!;
+
+        public static T LoadAssetAtPath<T>(string assetPath) where T : Object => throw null!;
+
+        public static void SaveAssets() => throw null!;
+    }
+}

@@ -1,0 +1,11 @@
+using UnityEngine;
+
+namespace UnityEditor
+{
+    // OnGUI and CreateGUI are messages, declared nowhere: the editor calls them by name.
+    // source: unity:Editor/Mono/EditorWindow.cs
+    public partial class EditorWindow : ScriptableObject
+    {
+        public static T GetWindow<T>(string title) where T : EditorWindow => throw null!;
+    }
+}

@@ -1,0 +1,10 @@
+using UnityEngine;
+
+namespace UnityEditor
+{
+    // source: unity:Editor/Mono/Undo/Undo.bindings.cs
+    public partial class Undo
+    {
+        public static void RegisterCreatedObjectUndo(Object objectToUndo, string name) => throw null!;
+    }
+}

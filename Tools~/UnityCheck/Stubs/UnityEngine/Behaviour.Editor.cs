@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Scripting/Behaviour.bindings.cs
+    public partial class Behaviour : Component
+    {
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Scripting/TextAsset.cs
+    public partial class TextAsset : Object
+    {
+        public TextAsset(string text) => throw null!;
+    }
+}

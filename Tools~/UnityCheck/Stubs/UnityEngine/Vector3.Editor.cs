@@ -1,0 +1,10 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Math/Vector3.cs
+    public partial struct Vector3
+    {
+        public float x;
+        public float y;
+        public float z;
+    }
+}
