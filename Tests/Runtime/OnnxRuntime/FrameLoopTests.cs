@@ -163,6 +163,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
         }
 
+        [Test]
+        public void RequestsThatCannotBeServedSayWhy()
+        {
+            using var loop = new FrameLoop(60, 0, Decoding.WorkerThread, seed: 9);
+            var (root, rotations) = loop.ClipPose(1.0);
+            var early = Assert.Throws<InvalidOperationException>(() => loop.Player.RequestTransition(root, rotations, 0.5));
+            Assert.That(early!.Message, Does.Contain("play at least one frame"));
+            loop.PlayUntil(0.5);
+            // The tiny model's largest frame index is 255: with P = 10 a transition spans at most 246 model frames.
+            var tooLong = Assert.Throws<ArgumentOutOfRangeException>(() => loop.Player.RequestTransition(root, rotations, 9.0));
+            Assert.That(tooLong!.Message, Does.Contain("this model spans at most 8.2 s"));
+            Assert.Throws<ArgumentOutOfRangeException>(() => loop.Player.RequestTransition(root, rotations, 0));
+            Assert.That(loop.Player.IsPlaying, Is.False);
+            Assert.That(loop.Completions, Is.Empty);
+        }
+
         private static double MaxDifference(double[] a, double[] b)
         {
             double max = 0;
