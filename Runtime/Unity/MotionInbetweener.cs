@@ -46,6 +46,7 @@ namespace DeltaInterpolator.Unity
         private NativeArray<double> _weight;
         private double[] _targetRoot = new double[3];
         private double[] _targetRotations = new double[0];
+        private Quaternion[] _savedRotations = new Quaternion[0];
         private double _shownTime;
         private bool _shownPending;
 
@@ -81,12 +82,11 @@ namespace DeltaInterpolator.Unity
             // Sample the clip onto the bones, read the pose, and put the bones back: the Animator
             // overwrites them in its next evaluation anyway, but scripts reading them this frame must not see it.
             int n = _bones.Length;
-            var saved = new Quaternion[n];
             Vector3 savedRoot = _bones[RootBone].localPosition;
-            for (int b = 0; b < n; b++) saved[b] = _bones[b].localRotation;
+            for (int b = 0; b < n; b++) _savedRotations[b] = _bones[b].localRotation;
             clip.SampleAnimation(gameObject, clipTime);
             ReadBones(_targetRoot, _targetRotations);
-            for (int b = 0; b < n; b++) _bones[b].localRotation = saved[b];
+            for (int b = 0; b < n; b++) _bones[b].localRotation = _savedRotations[b];
             _bones[RootBone].localPosition = savedRoot;
             return Request(player, seconds);
         }
@@ -164,11 +164,18 @@ namespace DeltaInterpolator.Unity
             _player.TransitionCompleted += OnCompleted;
             int n = _bones.Length;
             _targetRotations = new double[4 * n];
+            _savedRotations = new Quaternion[n];
             _handles = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
             for (int b = 0; b < n; b++) _handles[b] = _animator.BindStreamTransform(_bones[b]);
             _pose = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
             _shown = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
             _weight = new NativeArray<double>(1, Allocator.Persistent);
+            // Until the job has run once (it does not while the Animator is culled), the pose shown is the
+            // bones' current one, never zeros.
+            ReadBones(_targetRoot, _targetRotations);
+            Span<double> shown = _shown.AsSpan();
+            new ReadOnlySpan<double>(_targetRoot).CopyTo(shown.Slice(0, 3));
+            new ReadOnlySpan<double>(_targetRotations).CopyTo(shown.Slice(3));
             var job = new TransitionLayerJob { Bones = _handles, Pose = _pose, Shown = _shown, Weight = _weight, RootBone = RootBone };
             _graph = PlayableGraph.Create(name + " (Δ-Interpolator)");
             _graph.SetTimeUpdateMode(DirectorUpdateMode.GameTime);

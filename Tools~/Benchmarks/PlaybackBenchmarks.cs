@@ -96,6 +96,17 @@ namespace DeltaInterpolator.Benchmarks
         /// <summary>One request of 0.5 s (15 model frames) from the newest recorded pose.</summary>
         [Benchmark]
         public int Request() => _player.RequestTransition(_stream.Root, _stream.Rotations, 0.5);
+
+        /// <summary>
+        /// A request and the wait until all 14 missing frames are decoded: how long after a request the
+        /// whole transition is ready (worker: off the main thread; main: all of it on the main thread).
+        /// </summary>
+        [Benchmark]
+        public bool RequestUntilDecoded()
+        {
+            _player.RequestTransition(_stream.Root, _stream.Rotations, 0.5);
+            return _player.WaitUntilDecoded(60000);
+        }
     }
 
     /// <summary>An animation stream on arrays (the Unity glue's is on transform stream handles).</summary>
