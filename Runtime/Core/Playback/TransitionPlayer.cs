@@ -1,0 +1,412 @@
+using System;
+using System.Collections.Generic;
+using System.Threading;
+using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Rotations;
+
+namespace DeltaInterpolator.Core.Playback
+{
+    /// <summary>
+    /// One character's neural transitions in real time: it records the pose shown every rendered frame
+    /// (<see cref="PoseHistory"/>), turns <see cref="RequestTransition"/> into a network request at the
+    /// model's frame rate, and plays the answer at whatever rate the game renders, interpolating between
+    /// model frames, blended over the character's own animation. Everything the Unity component does per
+    /// frame is here, tested by a simulated frame loop.
+    /// </summary>
+    /// <remarks>
+    /// <para>Each rendered frame: <see cref="BeginFrame"/> (the transition's pose and weight for the frame
+    /// time), <see cref="PoseBlend.Apply"/> over the animation stream (the pose shown), then
+    /// <see cref="Record"/> of the pose shown. <see cref="Step"/> does the three in one call; the Unity
+    /// glue splits them between the main thread and the animation job.</para>
+    /// <para>Time is real. A request of d seconds is G = round(d · fps) model frames (at least 2); its
+    /// frames are spread evenly over exactly d seconds from the newest recorded frame t0, so the first
+    /// rendered frame at or after t0 + d shows the target pose (weight 1), and
+    /// <see cref="TransitionCompleted"/> fires in that frame. Missing frames come from the decoder;
+    /// until the ones a frame needs are there, the pose last shown by the transition is held.</para>
+    /// <para>A request made during a transition starts from the pose being shown (the newest recorded)
+    /// at full weight, so the motion stays continuous; the interrupted request completes with
+    /// <see cref="TransitionCompletion.ReachedTarget"/> false. After the target, the weight eases back to
+    /// the character's animation over <see cref="PlaybackSettings.BlendOutSeconds"/>.</para>
+    /// <para>Main thread only. <see cref="BeginFrame"/>, <see cref="Record"/> and <see cref="Step"/>
+    /// allocate nothing.</para>
+    /// </remarks>
+    public sealed class TransitionPlayer
+    {
+        /// <summary>Frame times within this of the target time count as reaching it (rounding of summed frame times).</summary>
+        private const double TimeTolerance = 1e-9;
+
+        private readonly IJointMap _map;
+        private readonly TransitionDecoder _decoder;
+        private readonly PlaybackSettings _settings;
+        private readonly List<TransitionJob> _jobs = new List<TransitionJob>();
+        private readonly int _joints;
+        private readonly double[] _pastRoots;
+        private readonly double[] _pastRotations;
+        private readonly double[] _poseRoot = new double[3];
+        private readonly double[] _poseRotations;
+        private readonly double[] _targetRoot = new double[3];
+        private readonly double[] _targetRotations;
+        private readonly double[] _shownRoot = new double[3];
+        private readonly double[] _shownRotations;
+        private readonly double[] _modelRoot = new double[3];
+        private readonly double[] _modelRotations;
+        private TransitionJob? _job;
+        private int _requestId;
+        private int _nextId;
+        private bool _playing;
+        private bool _reached;
+        private bool _inFrame;
+        private double _start;
+        private double _duration;
+        private double _period;
+        private double _reachedAt;
+        private double _startWeight;
+        private double _weight;
+        private int _gap;
+        private TransitionCompletion? _pendingCompletion;
+        private TransitionCompletion? _pendingInterruption;
+
+        /// <summary>Creates a player for one character.</summary>
+        /// <param name="map">Character bones ↔ model joints; its joint count must be the model's.</param>
+        /// <param name="decoder">Where the network runs (may be shared by many players of one model).</param>
+        /// <param name="settings">Blend times and past frames; read at each request and frame.</param>
+        public TransitionPlayer(IJointMap map, TransitionDecoder decoder, PlaybackSettings? settings = null)
+        {
+            _map = map ?? throw new ArgumentNullException(nameof(map));
+            _decoder = decoder ?? throw new ArgumentNullException(nameof(decoder));
+            _settings = settings ?? new PlaybackSettings();
+            ModelContract c = decoder.Contract;
+            if (map.JointCount != c.JointCount)
+            {
+                throw new ArgumentException($"the joint map has {map.JointCount} model joints but the model {c.Name} has {c.JointCount}; build the map from this model's skeleton", nameof(map));
+            }
+
+            _joints = c.JointCount;
+            FrameRate = decoder.FrameRate;
+            PastFrames = _settings.PastFrames > 0 ? _settings.PastFrames : c.TrainingPastFrames.Max;
+            if (PastFrames < 1 || PastFrames >= c.MaxFrameIndex) throw new ArgumentOutOfRangeException(nameof(settings), PastFrames, $"past frames must lie in 1..{c.MaxFrameIndex - 1}");
+            int b = map.BoneCount;
+            History = new PoseHistory(b, FrameRate, PastFrames);
+            _pastRoots = new double[PastFrames * 3];
+            _pastRotations = new double[PastFrames * b * 4];
+            _poseRotations = new double[b * 4];
+            _targetRotations = new double[b * 4];
+            _shownRotations = new double[b * 4];
+            _modelRotations = new double[_joints * 4];
+        }
+
+        /// <summary>Reports every request exactly once: when its target pose is shown, or when it is interrupted or cancelled.</summary>
+        public event Action<TransitionCompletion>? TransitionCompleted;
+
+        /// <summary>Bones per character pose.</summary>
+        public int BoneCount => _map.BoneCount;
+
+        /// <summary>The model's frame rate (contract <c>training.fps</c>).</summary>
+        public double FrameRate { get; }
+
+        /// <summary>Past model frames each request feeds the network (P).</summary>
+        public int PastFrames { get; }
+
+        /// <summary>The poses shown, recorded each frame.</summary>
+        public PoseHistory History { get; }
+
+        /// <summary>True from a request until the weight has eased back to 0 after its target.</summary>
+        public bool IsPlaying => _playing;
+
+        /// <summary>The current request's id (0 before the first).</summary>
+        public int CurrentRequestId => _requestId;
+
+        /// <summary>The frame time at which the current request shows its target (t0 + duration).</summary>
+        public double TargetTime => _start + _duration;
+
+        /// <summary>Model frames between the last past key and the target of the current request (G = n + 1).</summary>
+        public int GapFrames => _gap;
+
+        /// <summary>This frame's transition weight (0: the character's own animation, 1: the transition's pose).</summary>
+        public double Weight => _weight;
+
+        /// <summary>This frame's transition root position (character space, 3 values).</summary>
+        public ReadOnlySpan<double> PoseRoot => _poseRoot;
+
+        /// <summary>This frame's transition local rotations (character space, bones × 4, w x y z).</summary>
+        public ReadOnlySpan<double> PoseRotations => _poseRotations;
+
+        /// <summary>The root position shown by the last <see cref="Step"/> (character space).</summary>
+        public ReadOnlySpan<double> ShownRoot => _shownRoot;
+
+        /// <summary>The local rotations shown by the last <see cref="Step"/> (character space).</summary>
+        public ReadOnlySpan<double> ShownRotations => _shownRotations;
+
+        /// <summary>The current request's network problem (keys and missing frames, model space), or null.</summary>
+        public Transition? CurrentTransition => _job?.Transition;
+
+        /// <summary>Missing frames of the current request decoded so far.</summary>
+        public int DecodedFrames => _job?.Decoded ?? 0;
+
+        /// <summary>
+        /// Asks for a transition from the pose shown now to <paramref name="targetRotations"/> in
+        /// <paramref name="durationSeconds"/>. The network's inputs are built here (history resampled at the
+        /// model's rate, converted to the model's space); the network runs on the decoder.
+        /// </summary>
+        /// <param name="targetRoot">Target root position (character space, 3 values).</param>
+        /// <param name="targetRotations">Target local rotations (character space, bones × 4, w x y z).</param>
+        /// <param name="durationSeconds">Seconds from the newest recorded frame to the target.</param>
+        /// <returns>The request's id, as reported by <see cref="TransitionCompleted"/>.</returns>
+        /// <exception cref="InvalidOperationException">No frame was recorded yet.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">The duration is not positive or longer than the model can span.</exception>
+        public int RequestTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double durationSeconds)
+        {
+            if (!(durationSeconds > 0) || double.IsInfinity(durationSeconds)) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, "expected a positive number of seconds");
+            if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
+            if (History.Count == 0) throw new InvalidOperationException("no frame has been recorded yet: play at least one frame before requesting a transition");
+            int gap = Math.Max(2, (int)Math.Round(durationSeconds * FrameRate));
+            int missing = gap - 1;
+            ModelContract c = _decoder.Contract;
+            if (PastFrames + missing > c.MaxFrameIndex)
+            {
+                double longest = (c.MaxFrameIndex - PastFrames + 1) / FrameRate;
+                throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, $"{durationSeconds:0.###} s is {gap} model frames; this model spans at most {longest:0.###} s after {PastFrames} past frames");
+            }
+
+            bool wasPlaying = _playing;
+            Interrupt(History.NewestTime);
+            TransitionJob job = JobFor(PastFrames, missing);
+            Transition t = job.Transition;
+            double t0 = History.NewestTime;
+            History.Resample(t0, PastFrames, _pastRoots, _pastRotations);
+            int r = 4 * BoneCount;
+            int jr = 4 * _joints;
+            for (int i = 0; i < PastFrames; i++)
+            {
+                _map.ToModel(new ReadOnlySpan<double>(_pastRoots, 3 * i, 3), new ReadOnlySpan<double>(_pastRotations, r * i, r),
+                    new Span<double>(t.KeyRootPositions, 3 * i, 3), new Span<double>(t.KeyLocalRotations, jr * i, jr));
+            }
+
+            _map.ToModel(targetRoot, targetRotations, new Span<double>(t.KeyRootPositions, 3 * PastFrames, 3), new Span<double>(t.KeyLocalRotations, jr * PastFrames, jr));
+            targetRoot.Slice(0, 3).CopyTo(_targetRoot);
+            targetRotations.Slice(0, r).CopyTo(_targetRotations);
+            if (!_inFrame)
+            {
+                // Hold the pose shown until the first frames are decoded.
+                new ReadOnlySpan<double>(_pastRoots, 3 * (PastFrames - 1), 3).CopyTo(_poseRoot);
+                new ReadOnlySpan<double>(_pastRotations, r * (PastFrames - 1), r).CopyTo(_poseRotations);
+            }
+
+            _decoder.Start(job);
+            _job = job;
+            _requestId = ++_nextId;
+            _playing = true;
+            _reached = false;
+            _start = t0;
+            _duration = durationSeconds;
+            _gap = gap;
+            _period = durationSeconds / gap;
+            // A first request eases in from the character's animation; one during a transition starts from
+            // the pose shown at full weight, which is continuous because the new keys end at that pose.
+            _startWeight = wasPlaying ? 1.0 : 0.0;
+            FlushEvents();
+            return _requestId;
+        }
+
+        /// <summary>Stops the current transition at once (weight 0); it completes with ReachedTarget false.</summary>
+        public void Cancel()
+        {
+            Interrupt(History.Count == 0 ? 0 : History.NewestTime);
+            _weight = 0;
+            FlushEvents();
+        }
+
+        /// <summary>
+        /// Computes the transition's pose and weight for the frame rendered at <paramref name="time"/>
+        /// (<see cref="PoseRoot"/>, <see cref="PoseRotations"/>, <see cref="Weight"/>) and fires
+        /// <see cref="TransitionCompleted"/> when this frame shows the target.
+        /// </summary>
+        /// <exception cref="InvalidOperationException">The network failed on the decoder; the transition is ended.</exception>
+        public void BeginFrame(double time)
+        {
+            _inFrame = true;
+            try
+            {
+                Advance(time);
+                FlushEvents();
+            }
+            finally
+            {
+                _inFrame = false;
+            }
+        }
+
+        /// <summary>Records the pose shown at <paramref name="time"/> (character space) into <see cref="History"/>.</summary>
+        public void Record(double time, ReadOnlySpan<double> shownRoot, ReadOnlySpan<double> shownRotations) => History.Record(time, shownRoot, shownRotations);
+
+        /// <summary>
+        /// One rendered frame in one call: <see cref="BeginFrame"/>, <see cref="PoseBlend.Apply"/> over
+        /// <paramref name="stream"/>, and <see cref="Record"/> of the pose shown.
+        /// </summary>
+        public void Step<TStream>(double time, ref TStream stream)
+            where TStream : IPoseStream
+        {
+            BeginFrame(time);
+            PoseBlend.Apply(ref stream, _weight, _poseRoot, _poseRotations, _shownRoot, _shownRotations);
+            History.Record(time, _shownRoot, _shownRotations);
+        }
+
+        /// <summary>
+        /// Blocks until the current request's frames are all decoded (or <paramref name="millisecondsTimeout"/>
+        /// passes). Games never need this; it makes cut-scenes and tests deterministic.
+        /// </summary>
+        /// <returns>True when every frame is decoded (or nothing is playing).</returns>
+        public bool WaitUntilDecoded(int millisecondsTimeout)
+        {
+            TransitionJob? job = _job;
+            if (job == null || !_playing) return true;
+            _decoder.Ensure(job, job.Transition.MissingFrames);
+            var spin = new SpinWait();
+            int start = Environment.TickCount;
+            while (job.Decoded < job.Transition.MissingFrames && job.Error == null && !job.Finished)
+            {
+                if (unchecked(Environment.TickCount - start) > millisecondsTimeout) return false;
+                spin.SpinOnce();
+            }
+
+            return job.Decoded >= job.Transition.MissingFrames;
+        }
+
+        private void Advance(double time)
+        {
+            if (!_playing || _job == null)
+            {
+                _weight = 0;
+                return;
+            }
+
+            TransitionJob job = _job;
+            if (job.Error != null)
+            {
+                Exception error = job.Error;
+                Interrupt(time);
+                _weight = 0;
+                throw new InvalidOperationException("the in-betweening network failed: " + error.Message, error);
+            }
+
+            double s = time - _start;
+            if (s >= _duration - TimeTolerance || _reached)
+            {
+                if (!_reached)
+                {
+                    _reached = true;
+                    _reachedAt = time;
+                    _targetRoot.CopyTo(_poseRoot, 0);
+                    _targetRotations.CopyTo(_poseRotations, 0);
+                    _pendingCompletion = new TransitionCompletion(_requestId, true, time);
+                    _weight = 1;
+                    return;
+                }
+
+                double blendOut = _settings.BlendOutSeconds;
+                double x = blendOut > 0 ? (time - _reachedAt) / blendOut : 1;
+                if (x >= 1)
+                {
+                    _playing = false;
+                    _weight = 0;
+                    return;
+                }
+
+                _weight = 1 - SmoothStep(x);
+                return;
+            }
+
+            double u = Math.Max(0, s) / _period;
+            int a = Math.Min((int)Math.Floor(u), _gap - 1);
+            double f = u - a;
+            int need = Math.Min(a + 1, _gap - 1);
+            _decoder.Ensure(job, need);
+            if (job.Decoded >= need) Interpolate(job.Transition, a, f);
+            double blendIn = Math.Min(_settings.BlendInSeconds, _duration);
+            double w = blendIn > 0 ? SmoothStep(Math.Max(0, s) / blendIn) : 1;
+            _weight = _startWeight + (1 - _startWeight) * w;
+        }
+
+        /// <summary>The pose between model frames a and a + 1 (0: last past key, G: target) at fraction f, into the pose buffers.</summary>
+        private void Interpolate(Transition t, int a, double f)
+        {
+            int jr = 4 * _joints;
+            GetFrame(t, a, out double[] rootsA, out int rootA, out double[] rotsA, out int rotA);
+            GetFrame(t, a + 1, out double[] rootsB, out int rootB, out double[] rotsB, out int rotB);
+            for (int c = 0; c < 3; c++) _modelRoot[c] = rootsA[rootA + c] + f * (rootsB[rootB + c] - rootsA[rootA + c]);
+            for (int j = 0; j < _joints; j++)
+            {
+                QuaternionD qa = QuaternionD.Read(rotsA, rotA + 4 * j);
+                QuaternionD qb = QuaternionD.Read(rotsB, rotB + 4 * j);
+                QuaternionD q = f == 0 ? qa : Quaternions.Normalize(new SlerpPair(qa, qb).At(f));
+                q.Write(_modelRotations, 4 * j);
+            }
+
+            _map.ToCharacter(_modelRoot, new ReadOnlySpan<double>(_modelRotations, 0, jr), _poseRoot, _poseRotations);
+        }
+
+        /// <summary>Model frame i of the transition: 0 is the last past key, 1..n the missing frames, G the target.</summary>
+        private void GetFrame(Transition t, int i, out double[] roots, out int rootOffset, out double[] rotations, out int rotationOffset)
+        {
+            int jr = 4 * _joints;
+            if (i == 0 || i == _gap)
+            {
+                int key = i == 0 ? t.PastFrames - 1 : t.PastFrames;
+                roots = t.KeyRootPositions;
+                rootOffset = 3 * key;
+                rotations = t.KeyLocalRotations;
+                rotationOffset = jr * key;
+                return;
+            }
+
+            roots = t.RootPositions;
+            rootOffset = 3 * (i - 1);
+            rotations = t.LocalRotations;
+            rotationOffset = jr * (i - 1);
+        }
+
+        private void Interrupt(double time)
+        {
+            if (_job != null) _job.Cancel();
+            if (_playing && !_reached) _pendingInterruption = new TransitionCompletion(_requestId, false, time);
+            _playing = false;
+        }
+
+        private void FlushEvents()
+        {
+            // Events fire after the state is consistent, so a handler may request the next transition (from
+            // BeginFrame: without disturbing the pose this frame shows).
+            if (_pendingInterruption is TransitionCompletion interrupted)
+            {
+                _pendingInterruption = null;
+                TransitionCompleted?.Invoke(interrupted);
+            }
+
+            if (_pendingCompletion is TransitionCompletion completed)
+            {
+                _pendingCompletion = null;
+                TransitionCompleted?.Invoke(completed);
+            }
+        }
+
+        private TransitionJob JobFor(int past, int missing)
+        {
+            foreach (TransitionJob j in _jobs)
+            {
+                if (j != _job && j.Finished && j.Transition.PastFrames == past && j.Transition.MissingFrames == missing) return j;
+            }
+
+            var job = new TransitionJob(new Transition(_decoder.Contract.Skeleton, past, missing));
+            _jobs.Add(job);
+            return job;
+        }
+
+        private static double SmoothStep(double x)
+        {
+            if (x <= 0) return 0;
+            if (x >= 1) return 1;
+            return x * x * (3 - 2 * x);
+        }
+    }
+}

@@ -1,0 +1,80 @@
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Playback;
+
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>
+    /// One loaded model per (model asset, engine) for every character using it: characters share a
+    /// <see cref="TransitionDecoder"/> and the last one to leave disposes it.
+    /// </summary>
+    internal static class SharedDecoders
+    {
+        private static readonly Dictionary<(InbetweeningModel, string), Entry> s_entries = new Dictionary<(InbetweeningModel, string), Entry>();
+
+        /// <exception cref="ModelContractException">The model does not load or fit the contract.</exception>
+        public static TransitionDecoder Acquire(InbetweeningModel model, IInferenceBackendFactory factory)
+        {
+            var key = (model, factory.Name);
+            if (!s_entries.TryGetValue(key, out Entry? entry))
+            {
+                entry = new Entry(Load(model, factory));
+                s_entries.Add(key, entry);
+            }
+
+            entry.Users++;
+            return entry.Decoder;
+        }
+
+        public static void Release(TransitionDecoder decoder)
+        {
+            foreach (KeyValuePair<(InbetweeningModel, string), Entry> e in s_entries)
+            {
+                if (e.Value.Decoder != decoder) continue;
+                if (--e.Value.Users == 0)
+                {
+                    s_entries.Remove(e.Key);
+                    decoder.Dispose();
+                }
+
+                return;
+            }
+        }
+
+        private static TransitionDecoder Load(InbetweeningModel model, IInferenceBackendFactory factory)
+        {
+            IInferenceBackend whole = factory.Create(model, ModelGraphKind.Whole);
+            IInferenceBackend? keys = null;
+            IInferenceBackend? frame = null;
+            try
+            {
+                if (model.HasLazyGraphs)
+                {
+                    keys = factory.Create(model, ModelGraphKind.Keys);
+                    frame = factory.Create(model, ModelGraphKind.Frame);
+                }
+            }
+            catch
+            {
+                whole.Dispose();
+                keys?.Dispose();
+                throw;
+            }
+
+            var inbetweener = new Inbetweener(whole, keys, frame) { Id = model.name, DisplayName = model.name };
+            return factory.RunsOffMainThread ? new InferenceWorker(inbetweener) : (TransitionDecoder)new MainThreadDecoder(inbetweener);
+        }
+
+        private sealed class Entry
+        {
+            public Entry(TransitionDecoder decoder)
+            {
+                Decoder = decoder;
+            }
+
+            public TransitionDecoder Decoder { get; }
+
+            public int Users { get; set; }
+        }
+    }
+}

@@ -1,0 +1,53 @@
+using UnityEngine.Playables;
+
+namespace UnityEngine.Animations
+{
+    // source: unity:Modules/Animation/Managed/IAnimationJob.cs
+    public partial interface IAnimationJob
+    {
+        void ProcessAnimation(AnimationStream stream);
+
+        void ProcessRootMotion(AnimationStream stream);
+    }
+
+    // source: unity:Modules/Animation/Managed/IAnimationJobPlayable.cs
+    public partial interface IAnimationJobPlayable : IPlayable
+    {
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationStream.bindings.cs
+    public partial struct AnimationStream
+    {
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationStreamHandles.bindings.cs
+    public partial struct TransformStreamHandle
+    {
+        public Vector3 GetLocalPosition(AnimationStream stream) => throw null!;
+
+        public void SetLocalPosition(AnimationStream stream, Vector3 position) => throw null!;
+
+        public Quaternion GetLocalRotation(AnimationStream stream) => throw null!;
+
+        public void SetLocalRotation(AnimationStream stream, Quaternion rotation) => throw null!;
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimatorJobExtensions.bindings.cs
+    public static partial class AnimatorJobExtensions
+    {
+        public static TransformStreamHandle BindStreamTransform(this Animator animator, Transform transform) => throw null!;
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationScriptPlayable.bindings.cs
+    public partial struct AnimationScriptPlayable : IAnimationJobPlayable
+    {
+        public static AnimationScriptPlayable Create<T>(PlayableGraph graph, T jobData, int inputCount = 0)
+            where T : struct, IAnimationJob => throw null!;
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationPlayableOutput.bindings.cs
+    public partial struct AnimationPlayableOutput : IPlayableOutput
+    {
+        public static AnimationPlayableOutput Create(PlayableGraph graph, string name, Animator target) => throw null!;
+    }
+}

@@ -1,0 +1,47 @@
+using System;
+
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Scripting/Attributes.cs
+    public sealed partial class DisallowMultipleComponent : Attribute
+    {
+    }
+
+    // source: unity:Runtime/Export/Scripting/Attributes.cs
+    public sealed partial class RequireComponent : Attribute
+    {
+        public RequireComponent(Type requiredComponent) => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Scripting/Attributes.cs
+    public sealed partial class AddComponentMenu : Attribute
+    {
+        public AddComponentMenu(string menuName) => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Scripting/Attributes.cs
+    public sealed partial class CreateAssetMenuAttribute : Attribute
+    {
+        public string menuName { get => throw null!; set => throw null!; }
+
+        public string fileName { get => throw null!; set => throw null!; }
+
+        public int order { get => throw null!; set => throw null!; }
+    }
+
+    // source: unity:Runtime/Export/Serialization/Serialization.cs
+    public sealed partial class SerializeField : Attribute
+    {
+    }
+
+    // source: unity:Runtime/Export/PropertyDrawer/PropertyAttribute.cs
+    public abstract partial class PropertyAttribute : Attribute
+    {
+    }
+
+    // source: unity:Runtime/Export/PropertyDrawer/PropertyAttribute.cs
+    public partial class TooltipAttribute : PropertyAttribute
+    {
+        public TooltipAttribute(string tooltip) => throw null!;
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Debug/Debug.bindings.cs
+    public partial class Debug
+    {
+        public static void LogError(object message, Object context) => throw null!;
+    }
+}

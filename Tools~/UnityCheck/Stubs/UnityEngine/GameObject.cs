@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Scripting/GameObject.bindings.cs
+    public sealed partial class GameObject : Object
+    {
+    }
+}

@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Modules/Animation/ScriptBindings/Motion.bindings.cs
+    public partial class Motion : Object
+    {
+    }
+}

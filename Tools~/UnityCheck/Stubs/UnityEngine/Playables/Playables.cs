@@ -1,0 +1,40 @@
+namespace UnityEngine.Playables
+{
+    // source: unity:Runtime/Export/Director/IPlayable.cs
+    public partial interface IPlayable
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/IPlayableOutput.cs
+    public partial interface IPlayableOutput
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableGraph.bindings.cs
+    public enum DirectorUpdateMode
+    {
+        GameTime = 1,
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableGraph.bindings.cs
+    public partial struct PlayableGraph
+    {
+        public static PlayableGraph Create(string name) => throw null!;
+
+        public void Destroy() => throw null!;
+
+        public bool IsValid() => throw null!;
+
+        public void Play() => throw null!;
+
+        public void SetTimeUpdateMode(DirectorUpdateMode value) => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableOutputExtensions.cs
+    public static partial class PlayableOutputExtensions
+    {
+        public static void SetSourcePlayable<U, V>(this U output, V value)
+            where U : struct, IPlayableOutput
+            where V : struct, IPlayable => throw null!;
+    }
+}

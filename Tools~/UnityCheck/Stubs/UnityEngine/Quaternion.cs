@@ -1,0 +1,13 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Math/Quaternion.cs
+    public partial struct Quaternion
+    {
+        public float x;
+        public float y;
+        public float z;
+        public float w;
+
+        public Quaternion(float x, float y, float z, float w) => throw null!;
+    }
+}

@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Scripting/ScriptableObject.bindings.cs
+    public partial class ScriptableObject : Object
+    {
+    }
+}

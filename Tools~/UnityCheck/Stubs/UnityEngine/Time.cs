@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Time/Time.bindings.cs
+    public partial class Time
+    {
+        public static double timeAsDouble => throw null!;
+    }
+}

@@ -1,0 +1,14 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Transform/ScriptBindings/Transform.bindings.cs
+    public partial class Transform : Component
+    {
+        public Vector3 localPosition { get => throw null!; set => throw null!; }
+
+        public Quaternion localRotation { get => throw null!; set => throw null!; }
+
+        public int childCount => throw null!;
+
+        public Transform GetChild(int index) => throw null!;
+    }
+}
