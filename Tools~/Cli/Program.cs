@@ -15,6 +15,7 @@ namespace DeltaInterpolator.Cli
         /// <summary>The verbs, in the order <c>--help</c> lists them.</summary>
         private static ICliVerb[] Verbs => new ICliVerb[]
         {
+            new BakeVerb(),
             new BenchmarkVerb(),
             new InfoVerb(),
             new SpeedVerb(),
@@ -33,7 +34,8 @@ namespace DeltaInterpolator.Cli
                 "Reads BVH motion capture, runs the official LaFAN1 in-betweening benchmark and (later) neural models.\n\n" +
                 "Examples:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
-                "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n\n" +
+                "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n" +
+                "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n\n" +
                 "Run 'inbetween VERB --help' for a verb's options.");
             foreach (ICliVerb verb in Verbs) root.Subcommands.Add(verb.CreateCommand());
 
