@@ -20,6 +20,14 @@ namespace DeltaInterpolator.Core.Baking
         public ShortContextPolicy ShortContext { get; set; } = ShortContextPolicy.FeedAvailable;
 
         /// <summary>
+        /// True (the default): the frames before a gap that earlier gaps filled count as past context, as
+        /// key frames do. False: only key frames count — the run of consecutive keys ending at the gap's
+        /// first key (usually that key alone, then laid out under <see cref="ShortContext"/>), so the
+        /// in-betweener never sees its own output.
+        /// </summary>
+        public bool FilledFramesAsContext { get; set; } = true;
+
+        /// <summary>
         /// Largest frame index a request may use: past keys P plus missing frames n must satisfy
         /// P + n ≤ this (the target's index). <see cref="int.MaxValue"/> for no limit.
         /// </summary>

@@ -17,7 +17,8 @@ namespace DeltaInterpolator.Core.Baking
     /// <para>Past context of a gap: up to <see cref="BakeSettings.PastFrames"/> consecutive frames ending
     /// at the key before it — key frames and frames this baker already filled alike, since a model was
     /// trained on consecutive past frames and with keys every K &gt; 1 frames the frames right before a
-    /// key are always filled ones. The future is the next key. At the first gap only the first key
+    /// key are always filled ones (<see cref="BakeSettings.FilledFramesAsContext"/> = false limits it to
+    /// key frames). The future is the next key. At the first gap only the first key
     /// exists; fewer frames than wanted are fed under <see cref="BakeSettings.ShortContext"/>.</para>
     /// <para>Refused (<see cref="KeyLayoutException"/>): fewer than two keys, keys out of range, not
     /// increasing or repeated, and a gap the graph cannot take even with one past key (1 + n beyond the
@@ -102,7 +103,7 @@ namespace DeltaInterpolator.Core.Baking
                         $"expected gaps of at most {Settings.MaxFrameIndex - 1} frames; add a key inside this gap");
                 }
 
-                int available = Math.Min(start - first + 1, Settings.PastFrames);
+                int available = Math.Min(Settings.FilledFramesAsContext ? start - first + 1 : KeyRun(sorted, i), Settings.PastFrames);
                 int pastKeys = PastContext.KeyCount(available, Settings.PastFrames, Settings.ShortContext);
                 if (pastKeys > fit)
                 {
@@ -251,6 +252,14 @@ namespace DeltaInterpolator.Core.Baking
             }
 
             return t;
+        }
+
+        /// <summary>How many keys end at keys[i] without a frame between them (≥ 1).</summary>
+        private static int KeyRun(int[] keys, int i)
+        {
+            int run = 1;
+            while (i - run >= 0 && keys[i - run] == keys[i] - run) run++;
+            return run;
         }
 
         private static string Describe(List<BakeGap> gaps)

@@ -97,6 +97,27 @@ namespace DeltaInterpolator.Tests.Baking
         }
 
         [Test]
+        public void WithoutFilledFramesOnlyConsecutiveKeysAreContext()
+        {
+            MotionClip source = RandomClip(30, 4);
+            int[] keys = { 0, 1, 2, 10, 20 };
+            var recorder = new RecordingInbetweener();
+            var settings = new BakeSettings { PastFrames = 4, ShortContext = ShortContextPolicy.FeedAvailable, FilledFramesAsContext = false };
+            var baker = new ClipBaker(recorder, settings);
+            BakePlan plan = baker.Plan(source.FrameCount, keys);
+            Assert.That(plan.Gaps.Count, Is.EqualTo(2));
+            Assert.That(plan.Gaps[0].PastAvailable, Is.EqualTo(3), "keys 0, 1, 2");
+            Assert.That(plan.Gaps[1].PastAvailable, Is.EqualTo(1), "key 10 alone: frames 7..9 were filled");
+            baker.Bake(source, plan);
+            Call second = recorder.Calls[1];
+            Assert.That(second.PastFrames, Is.EqualTo(1));
+            for (int c = 0; c < 12; c++) Assert.That(second.KeyRotations[c], Is.EqualTo(source.LocalRotations[source.RotationIndex(10, 0) + c]));
+
+            settings.FilledFramesAsContext = true;
+            Assert.That(baker.Plan(source.FrameCount, keys).Gaps[1].PastAvailable, Is.EqualTo(4), "with filled frames: 7..10");
+        }
+
+        [Test]
         public void RepeatEarliestPadsTheFirstGapsToTheWantedPastFrames()
         {
             MotionClip source = RandomClip(30, 3);

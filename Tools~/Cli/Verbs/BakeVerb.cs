@@ -64,6 +64,13 @@ namespace DeltaInterpolator.Cli.Verbs
             DefaultValueFactory = _ => "auto",
         };
 
+        private readonly Option<string> _context = new Option<string>("--context")
+        {
+            Description = "Past context of a gap: 'filled' = key frames and frames already filled (default), 'keys' = key frames only (the key before the gap, laid out by --past-policy).",
+            HelpName = "filled|keys",
+            DefaultValueFactory = _ => "filled",
+        };
+
         private readonly Option<string> _out = new Option<string>("--out")
         {
             Description = "Output BVH file (same joints and channels as IN.bvh).",
@@ -108,6 +115,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_method);
             command.Options.Add(_model);
             command.Options.Add(_pastPolicy);
+            command.Options.Add(_context);
             command.Options.Add(_out);
             command.Options.Add(_force);
             command.Options.Add(_stats);
@@ -138,6 +146,12 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"inbetween bake: --method '{method}'; expected model or slerp");
             }
 
+            string context = parse.GetValue(_context)!;
+            if (context != "filled" && context != "keys")
+            {
+                throw new CliErrors.UsageException($"inbetween bake: --context '{context}'; expected filled or keys");
+            }
+
             if (threads < 1) throw new CliErrors.UsageException($"inbetween bake: --threads {threads}; expected 1 or more");
             if (!File.Exists(input)) throw new CliErrors.UsageException($"{input}: no such file; expected a .bvh file");
             string modelPath = parse.GetValue(_model) ?? DefaultModelPath();
@@ -166,7 +180,9 @@ namespace DeltaInterpolator.Cli.Verbs
             MotionClip source = seam.ToModel(animation);
             int[] modelKeys = seam.KeysToModel(inputKeys);
 
-            var modelBaker = new ClipBaker(model, BakeSettings.ForModel(model.Contract, policy));
+            BakeSettings modelSettings = BakeSettings.ForModel(model.Contract, policy);
+            modelSettings.FilledFramesAsContext = context == "filled";
+            var modelBaker = new ClipBaker(model, modelSettings);
             var slerpBaker = new ClipBaker(new SlerpBaseline(), BakeSettings.ForBaseline("SLERP"));
             BakePlan modelPlan = Plan(modelBaker, source.FrameCount, modelKeys, input);
             BakePlan slerpPlan = Plan(slerpBaker, source.FrameCount, modelKeys, input);
@@ -264,9 +280,10 @@ namespace DeltaInterpolator.Cli.Verbs
             string policy = settings.ShortContext == ShortContextPolicy.RepeatEarliest ? "repeat the earliest" : "feed what exists";
             string trained = settings.TrainedPastFrames is { } p ? $"trained on {p.Min}..{p.Max} past frames" : "trained past range unknown";
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
-                "{0:N0} frames at {1:0.##} fps, {2} keys ({3}{4}), {5} gaps; model context: up to {6} past frames (keys and filled frames), fewer at the first gaps: {7} ({8}); {9}",
+                "{0:N0} frames at {1:0.##} fps, {2} keys ({3}{4}), {5} gaps; model context: up to {6} past frames ({10}), where fewer exist: {7} ({8}); {9}",
                 motion.FrameCount, 1.0 / motion.FrameTime, keys.Length, KeySummary(keys), plan.FrameCount < motion.FrameCount ? $"; output frames {keys[0]}..{keys[keys.Length - 1]}" : "",
-                plan.Gaps.Count, settings.PastFrames, policy, trained, seam.Description)));
+                plan.Gaps.Count, settings.PastFrames, policy, trained, seam.Description,
+                settings.FilledFramesAsContext ? "keys and filled frames" : "key frames only")));
             if (statistics != null) AnsiConsole.MarkupLine(Markup.Escape($"L2P: per-coordinate std of {statistics.Source}, frames where they are in the file (no window normalisation); L2Q: global quaternions, each in the truth's hemisphere"));
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "wrote {0} ({1}); read {2:0.000} s, model load {3:0.000} s, total {4:0.00} s",
