@@ -12,8 +12,8 @@ namespace DeltaInterpolator.Core.Baking
         internal BakePlan(int sourceFrameCount, int[] keys, BakeGap[] gaps, string[] warnings)
         {
             SourceFrameCount = sourceFrameCount;
-            Keys = keys;
-            Gaps = gaps;
+            KeyArray = keys;
+            GapArray = gaps;
             Warnings = warnings;
         }
 
@@ -21,7 +21,7 @@ namespace DeltaInterpolator.Core.Baking
         public int SourceFrameCount { get; }
 
         /// <summary>The key frame indices, increasing.</summary>
-        public IReadOnlyList<int> Keys { get; }
+        public IReadOnlyList<int> Keys => KeyArray;
 
         /// <summary>The first key: frame 0 of the baked clip.</summary>
         public int FirstKey => Keys[0];
@@ -33,7 +33,7 @@ namespace DeltaInterpolator.Core.Baking
         public int FrameCount => LastKey - FirstKey + 1;
 
         /// <summary>Gaps with at least one missing frame, in fill order.</summary>
-        public IReadOnlyList<BakeGap> Gaps { get; }
+        public IReadOnlyList<BakeGap> Gaps => GapArray;
 
         /// <summary>Frames to be filled (the sum of the gaps' missing frames).</summary>
         public int MissingFrames
@@ -41,10 +41,16 @@ namespace DeltaInterpolator.Core.Baking
             get
             {
                 int total = 0;
-                foreach (BakeGap g in Gaps) total += g.Missing;
+                foreach (BakeGap g in GapArray) total += g.Missing;
                 return total;
             }
         }
+
+        /// <summary>The keys as an array, for allocation-free loops.</summary>
+        internal int[] KeyArray { get; }
+
+        /// <summary>The gaps as an array, for allocation-free loops.</summary>
+        internal BakeGap[] GapArray { get; }
 
         /// <summary>One line per kind of concern (e.g. gaps longer than the model was trained on), naming the gaps.</summary>
         public IReadOnlyList<string> Warnings { get; }

@@ -24,13 +24,14 @@ namespace DeltaInterpolator.Core.Baking
     /// increasing or repeated, and a gap the graph cannot take even with one past key (1 + n beyond the
     /// largest frame index). When a gap fits only with fewer past keys than wanted, fewer are fed. Gaps
     /// outside the trained ranges are baked and named in <see cref="BakePlan.Warnings"/>.</para>
-    /// <para>Buffers (one <see cref="Transition"/> per request shape) are reused across gaps and bakes.
-    /// Not thread-safe.</para>
+    /// <para>Buffers (one <see cref="Transition"/> per request shape, the root track) are reused across
+    /// gaps and bakes. Not thread-safe.</para>
     /// </remarks>
     public sealed class ClipBaker
     {
         private readonly Dictionary<long, Transition> _transitions = new Dictionary<long, Transition>();
         private Skeleton? _transitionSkeleton;
+        private double[] _root = Array.Empty<double>();
 
         /// <summary>Creates a baker over <paramref name="inbetweener"/> (not owned: the caller disposes it).</summary>
         public ClipBaker(IInbetweener inbetweener, BakeSettings settings)
@@ -175,7 +176,8 @@ namespace DeltaInterpolator.Core.Baking
         /// <summary>
         /// <see cref="Bake(MotionClip, BakePlan, IProgress{BenchmarkProgress})"/> into an existing clip of
         /// <see cref="BakePlan.FrameCount"/> frames on the same skeleton (its buffers are overwritten), so
-        /// repeated bakes of the same length allocate nothing but the root-position scratch buffer.
+        /// repeated bakes allocate nothing once every request shape has been seen (with an in-betweener that
+        /// allocates nothing per call, such as SLERP or the ONNX Runtime model).
         /// </summary>
         public void Bake(MotionClip source, BakePlan plan, MotionClip destination, IProgress<BenchmarkProgress>? progress = null)
         {
@@ -198,9 +200,10 @@ namespace DeltaInterpolator.Core.Baking
             int first = plan.FirstKey;
             double[] rotations = destination.LocalRotations;
             double[] positions = destination.LocalPositions;
-            var root = new double[frames * 3];
+            if (_root.Length < frames * 3) _root = new double[frames * 3];
+            double[] root = _root;
             int posStride = j * 3, rotStride = j * 4;
-            foreach (int key in plan.Keys)
+            foreach (int key in plan.KeyArray)
             {
                 int f = key - first;
                 Array.Copy(source.LocalPositions, key * posStride, positions, f * posStride, posStride);
@@ -210,8 +213,8 @@ namespace DeltaInterpolator.Core.Baking
 
             ReadOnlySpan<double> offsets = skeleton.OffsetSpan;
             int done = 0;
-            progress?.Report(new BenchmarkProgress(ProgressStage, 0, plan.Gaps.Count));
-            foreach (BakeGap gap in plan.Gaps)
+            progress?.Report(new BenchmarkProgress(ProgressStage, 0, plan.GapArray.Length));
+            foreach (BakeGap gap in plan.GapArray)
             {
                 int n = gap.Missing;
                 int start = gap.StartKey - first;
@@ -229,7 +232,7 @@ namespace DeltaInterpolator.Core.Baking
                 }
 
                 done++;
-                progress?.Report(new BenchmarkProgress(ProgressStage, done, plan.Gaps.Count));
+                progress?.Report(new BenchmarkProgress(ProgressStage, done, plan.GapArray.Length));
             }
         }
 
