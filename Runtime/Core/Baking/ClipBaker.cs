@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
-using DeltaInterpolator.Core.Benchmark;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -158,9 +157,9 @@ namespace DeltaInterpolator.Core.Baking
         /// </summary>
         /// <param name="source">The clip the keys index; only its key frames are read.</param>
         /// <param name="plan">From <see cref="Plan"/> for this clip's frame count.</param>
-        /// <param name="progress">One report per gap filled (stage "Baking gaps").</param>
+        /// <param name="progress">Receives the number of gaps filled so far (0, then after every gap; of <c>plan.Gaps.Count</c>).</param>
         /// <exception cref="ArgumentException">The plan was made for another frame count.</exception>
-        public MotionClip Bake(MotionClip source, BakePlan plan, IProgress<BenchmarkProgress>? progress = null)
+        public MotionClip Bake(MotionClip source, BakePlan plan, IProgress<int>? progress = null)
         {
             if (source == null) throw new ArgumentNullException(nameof(source));
             if (plan == null) throw new ArgumentNullException(nameof(plan));
@@ -174,12 +173,12 @@ namespace DeltaInterpolator.Core.Baking
         }
 
         /// <summary>
-        /// <see cref="Bake(MotionClip, BakePlan, IProgress{BenchmarkProgress})"/> into an existing clip of
+        /// <see cref="Bake(MotionClip, BakePlan, IProgress{int})"/> into an existing clip of
         /// <see cref="BakePlan.FrameCount"/> frames on the same skeleton (its buffers are overwritten), so
         /// repeated bakes allocate nothing once every request shape has been seen (with an in-betweener that
         /// allocates nothing per call, such as SLERP or the ONNX Runtime model).
         /// </summary>
-        public void Bake(MotionClip source, BakePlan plan, MotionClip destination, IProgress<BenchmarkProgress>? progress = null)
+        public void Bake(MotionClip source, BakePlan plan, MotionClip destination, IProgress<int>? progress = null)
         {
             if (source == null) throw new ArgumentNullException(nameof(source));
             if (plan == null) throw new ArgumentNullException(nameof(plan));
@@ -213,7 +212,7 @@ namespace DeltaInterpolator.Core.Baking
 
             ReadOnlySpan<double> offsets = skeleton.OffsetSpan;
             int done = 0;
-            progress?.Report(new BenchmarkProgress(ProgressStage, 0, plan.GapArray.Length));
+            progress?.Report(0);
             foreach (BakeGap gap in plan.GapArray)
             {
                 int n = gap.Missing;
@@ -232,12 +231,9 @@ namespace DeltaInterpolator.Core.Baking
                 }
 
                 done++;
-                progress?.Report(new BenchmarkProgress(ProgressStage, done, plan.GapArray.Length));
+                progress?.Report(done);
             }
         }
-
-        /// <summary>The progress stage name of <see cref="Bake(MotionClip, BakePlan, IProgress{BenchmarkProgress})"/>.</summary>
-        public const string ProgressStage = "Baking gaps";
 
         private Transition TransitionFor(Skeleton skeleton, int past, int missing)
         {

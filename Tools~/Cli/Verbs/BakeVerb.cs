@@ -201,7 +201,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn(), new RemainingTimeColumn())
                 .Start(ctx =>
                 {
-                    IProgress<BenchmarkProgress>? reporter = Console.IsErrorRedirected ? null : new SpectreProgress(ctx);
+                    IProgress<int>? reporter = Console.IsErrorRedirected ? null : new GapProgress(new SpectreProgress(ctx), modelPlan.Gaps.Count);
                     var sw = Stopwatch.StartNew();
                     modelClip = modelBaker.Bake(source, modelPlan, reporter);
                     modelSeconds = sw.Elapsed.TotalSeconds;
@@ -228,6 +228,21 @@ namespace DeltaInterpolator.Cli.Verbs
             PrintSummary(input, animation, inputKeys, modelPlan, modelBaker.Settings, model.Contract, seam, outPath, method,
                 modelScore, slerpScore, statistics, modelSeconds, slerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds);
             return 0;
+        }
+
+        /// <summary>Gaps filled → one progress bar ("Baking gaps with the model"), updated synchronously.</summary>
+        private sealed class GapProgress : IProgress<int>
+        {
+            private readonly IProgress<BenchmarkProgress> _bars;
+            private readonly int _total;
+
+            public GapProgress(IProgress<BenchmarkProgress> bars, int total)
+            {
+                _bars = bars;
+                _total = total;
+            }
+
+            public void Report(int value) => _bars.Report(new BenchmarkProgress("Baking gaps with the model", value, _total));
         }
 
         private static BakePlan Plan(ClipBaker baker, int frameCount, int[] keys, string input)
