@@ -16,6 +16,7 @@ namespace DeltaInterpolator.Cli
         /// <summary>The verbs, in the order <c>--help</c> lists them.</summary>
         private static ICliVerb[] Verbs => new ICliVerb[]
         {
+            new BakeVerb(),
             new BenchmarkVerb(),
             new InfoVerb(),
             new PreviewVerb(),
@@ -37,6 +38,7 @@ namespace DeltaInterpolator.Cli
                 "Examples:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
                 "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n" +
+                "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n" +
                 "  inbetween pack --out out/release\n\n" +
                 "Run 'inbetween VERB --help' for a verb's options.");
             foreach (ICliVerb verb in Verbs) root.Subcommands.Add(verb.CreateCommand());

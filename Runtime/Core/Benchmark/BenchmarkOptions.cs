@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Benchmark
@@ -20,6 +21,27 @@ namespace DeltaInterpolator.Core.Benchmark
         /// <summary>Number of past key frames (official: 10); the facing frame is the last of them.</summary>
         public int PastFrames { get; set; } = 10;
 
+        /// <summary>
+        /// How many of the <see cref="PastFrames"/> context frames the in-betweeners are given: the last
+        /// <c>FedPastFrames</c> of them (0, the default, means all). The windows, the facing frame and the
+        /// target frame do not change, so the SLERP and zero-velocity rows (which use only the last past
+        /// frame and the target) do not change either; a model sees the same transitions with less history.
+        /// </summary>
+        public int FedPastFrames { get; set; }
+
+        /// <summary>
+        /// With <see cref="FedPastFrames"/> below <see cref="PastFrames"/>: feed the fed frames alone as
+        /// past keys 0..P−1 (<see cref="ShortContextPolicy.FeedAvailable"/>, the default) or repeat the
+        /// earliest of them to fill all <see cref="PastFrames"/> keys (<see cref="ShortContextPolicy.RepeatEarliest"/>).
+        /// </summary>
+        public ShortContextPolicy ShortContext { get; set; } = ShortContextPolicy.FeedAvailable;
+
+        /// <summary>The number of context frames actually given: <see cref="FedPastFrames"/>, or <see cref="PastFrames"/> when 0.</summary>
+        public int EffectivePastFrames => FedPastFrames == 0 ? PastFrames : FedPastFrames;
+
+        /// <summary>Past keys per transition: <see cref="PastContext.KeyCount"/> of the fed frames under <see cref="ShortContext"/>.</summary>
+        public int KeyPastFrames => PastContext.KeyCount(EffectivePastFrames, PastFrames, ShortContext);
+
         /// <summary>Transition lengths n to evaluate (official: 5, 15, 30, 45).</summary>
         public IReadOnlyList<int> Lengths { get; set; } = new[] { 5, 15, 30, 45 };
 
@@ -37,6 +59,11 @@ namespace DeltaInterpolator.Core.Benchmark
         public void Validate()
         {
             if (PastFrames < 1) throw new ArgumentException($"past frames = {PastFrames}; expected at least 1");
+            if (FedPastFrames < 0 || FedPastFrames > PastFrames)
+            {
+                throw new ArgumentException($"past frames fed = {FedPastFrames}; expected 1..{PastFrames} (the last P of the {PastFrames} context frames)");
+            }
+
             if (Offset < 1) throw new ArgumentException($"offset = {Offset}; expected at least 1 frame between windows");
             if (Lengths == null || Lengths.Count == 0) throw new ArgumentException("no transition lengths; expected at least one, e.g. 5,15,30,45");
             var seen = new HashSet<int>();

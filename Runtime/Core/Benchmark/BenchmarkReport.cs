@@ -21,6 +21,8 @@ namespace DeltaInterpolator.Core.Benchmark
             Window = options.Window;
             Offset = options.Offset;
             PastFrames = options.PastFrames;
+            FedPastFrames = options.EffectivePastFrames;
+            ShortContext = options.ShortContext;
             Lengths = new List<int>(options.Lengths).ToArray();
             StatisticsSource = statisticsSource;
             MethodIds = methodIds;
@@ -39,6 +41,12 @@ namespace DeltaInterpolator.Core.Benchmark
 
         /// <summary>Past key frames.</summary>
         public int PastFrames { get; }
+
+        /// <summary>How many of the context frames the in-betweeners were given (the last ones).</summary>
+        public int FedPastFrames { get; }
+
+        /// <summary>How fewer fed frames than <see cref="PastFrames"/> were laid out as past keys.</summary>
+        public Inbetweening.ShortContextPolicy ShortContext { get; }
 
         /// <summary>Transition lengths, in the order evaluated.</summary>
         public IReadOnlyList<int> Lengths { get; }

@@ -14,7 +14,8 @@ namespace DeltaInterpolator.Core.Benchmark
     /// <see cref="IInbetweener"/>. Per test file: quaternion continuity fix over the whole file; windows
     /// of <see cref="BenchmarkOptions.Window"/> frames every <see cref="BenchmarkOptions.Offset"/> while
     /// start + window &lt; frames; root XZ centred on the window mean; facing +X at the last past frame.
-    /// Per window and transition length n: P past frames, n missing frames, the target at P + n. Ground
+    /// Per window and transition length n: P past frames, n missing frames, the target at P + n (with
+    /// <see cref="BenchmarkOptions.FedPastFrames"/>, only the last of the P are given). Ground
     /// truth and predictions both go through FK with the statistics' offsets; L2Q, L2P and NPSS are
     /// computed on the missing frames only.
     /// </summary>
@@ -65,6 +66,8 @@ namespace DeltaInterpolator.Core.Benchmark
             int jointCount = skeleton.JointCount;
             int window = options.Window;
             int past = options.PastFrames;
+            int fed = options.EffectivePastFrames;
+            int keyPast = options.KeyPastFrames;
             IReadOnlyList<int> lengths = options.Lengths;
             int totalWindows = CountWindows(testClips, options);
             if (totalWindows == 0) throw new ArgumentException($"the test files are shorter than one window of {window} frames");
@@ -86,7 +89,7 @@ namespace DeltaInterpolator.Core.Benchmark
             int maxMissing = 0;
             for (int l = 0; l < lengths.Count; l++)
             {
-                transitions[l] = new Transition(skeleton, past, lengths[l]);
+                transitions[l] = new Transition(skeleton, keyPast, lengths[l]);
                 npss[l] = new Npss(lengths[l], jointCount * 4);
                 maxMissing = Math.Max(maxMissing, lengths[l]);
             }
@@ -133,7 +136,9 @@ namespace DeltaInterpolator.Core.Benchmark
 
                         for (int m = 0; m < methods.Count; m++)
                         {
-                            FillKeys(transition, root, rotations, jointCount, past, n);
+                            // The last `fed` of the past frames (padded under the short-context policy) and the target.
+                            PastContext.FillPast(transition, root, rotations, past - 1, fed);
+                            PastContext.FillTarget(transition, root, rotations, past + n);
                             methods[m].Inbetween(transition);
                             Span<double> pp = predictedPositions.AsSpan(0, posLen);
                             Span<double> pr = predictedRotations.AsSpan(0, rotLen);
@@ -163,16 +168,6 @@ namespace DeltaInterpolator.Core.Benchmark
             }
 
             return new BenchmarkReport(totalWindows, options, statistics.Source, ids, names, totals);
-        }
-
-        /// <summary>Copies past frames 0..P−1 and the target P + n of a normalised window into the key buffers.</summary>
-        private static void FillKeys(Transition transition, double[] root, double[] rotations, int jointCount, int past, int n)
-        {
-            int stride = jointCount * 4;
-            Array.Copy(root, 0, transition.KeyRootPositions, 0, past * 3);
-            Array.Copy(rotations, 0, transition.KeyLocalRotations, 0, past * stride);
-            Array.Copy(root, (past + n) * 3, transition.KeyRootPositions, past * 3, 3);
-            Array.Copy(rotations, (past + n) * stride, transition.KeyLocalRotations, past * stride, stride);
         }
     }
 }

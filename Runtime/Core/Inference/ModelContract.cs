@@ -117,6 +117,9 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>Training range of gap lengths [min, max]; longer gaps run but were never seen.</summary>
         public (int Min, int Max) TrainingMissingFrames { get; private set; }
 
+        /// <summary>Frames per second of the training data (LaFAN1: 30); 0 when the metadata does not say.</summary>
+        public double TrainingFrameRate { get; private set; }
+
         /// <summary>Network size.</summary>
         public ModelArchitecture Architecture { get; private set; } = null!;
 
@@ -384,6 +387,7 @@ namespace DeltaInterpolator.Core.Inference
                 IReadOnlyDictionary<string, JsonValue> t = training.ExpectObject("training");
                 TrainingPastFrames = Range(t, "past_frames");
                 TrainingMissingFrames = Range(t, "missing_frames");
+                TrainingFrameRate = t.TryGetValue("fps", out JsonValue? fps) ? fps.ExpectNumber("training.fps") : 0;
             }
 
             IReadOnlyDictionary<string, JsonValue> a = Member(m, "architecture").ExpectObject("architecture");

@@ -59,6 +59,20 @@ namespace DeltaInterpolator.Cli.Verbs
             DefaultValueFactory = _ => "5,15,30,45",
         };
 
+        private readonly Option<int> _pastFrames = new Option<int>("--past-frames")
+        {
+            Description = "Give the methods only the last P of the 10 context frames (network key indices 0..P-1, target P+n). Windows, facing frame and target stay the official ones, so Interp. and Zero-V (frame 9 and the target only) do not change.",
+            HelpName = "P",
+            DefaultValueFactory = _ => 10,
+        };
+
+        private readonly Option<string> _pastPolicy = new Option<string>("--past-policy")
+        {
+            Description = "With --past-frames below 10: 'feed' gives the P frames alone; 'repeat' repeats the earliest of them in front to fill 10 past keys (what a model trained at 10 past frames only knows).",
+            HelpName = "feed|repeat",
+            DefaultValueFactory = _ => "feed",
+        };
+
         private readonly Option<string?> _json = new Option<string?>("--json")
         {
             Description = "Also write the results as JSON to this file: {\"windows\", \"window\", \"offset\", \"stats\", \"results\": {method: {l2q|l2p|npss: {length: value}}}}.",
@@ -94,13 +108,17 @@ namespace DeltaInterpolator.Cli.Verbs
                 "  NPSS power-spectrum distance of global quaternions (Gopalakrishnan et al. 2019)\n" +
                 "Lower is better. A result that is not a finite number (motion values too large, e.g. 1e308) is an error (exit 2).\n" +
                 OutputOptions.HelpText + "\n" +
-                "Example:\n" +
-                "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json");
+                "Examples:\n" +
+                "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
+                "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json \\\n" +
+                "      --model Runtime/Models/DeltaInterpolator-LaFAN1.onnx --lengths 5,15,30 --past-frames 1 --past-policy repeat");
             command.Options.Add(_data);
             command.Options.Add(_stats);
             command.Options.Add(_window);
             command.Options.Add(_offset);
             command.Options.Add(_lengths);
+            command.Options.Add(_pastFrames);
+            command.Options.Add(_pastPolicy);
             command.Options.Add(_json);
             command.Options.Add(_saveStats);
             command.Options.Add(_model.Model);
@@ -121,7 +139,14 @@ namespace DeltaInterpolator.Cli.Verbs
                 Window = parse.GetValue(_window),
                 Offset = parse.GetValue(_offset),
                 Lengths = ParseLengths(parse.GetValue(_lengths)!),
+                FedPastFrames = parse.GetValue(_pastFrames),
+                ShortContext = ParsePolicy(parse.GetValue(_pastPolicy)!),
             };
+            if (options.FedPastFrames < 1 || options.FedPastFrames > options.PastFrames)
+            {
+                throw new CliErrors.UsageException($"inbetween benchmark: --past-frames {options.FedPastFrames}; expected 1..{options.PastFrames} (the last P of the {options.PastFrames} context frames)");
+            }
+
             try
             {
                 options.Validate();
@@ -251,6 +276,14 @@ namespace DeltaInterpolator.Cli.Verbs
             statsPath = statsPath == null ? null : TerminalText.Safe(statsPath, TerminalText.LineLength);
             AnsiConsole.MarkupLine(Markup.Escape(
                 $"{report!.WindowCount} windows of {options.Window} frames every {options.Offset} from {testClips!.Length} test files ({frames:N0} frames); {statsLine}"));
+            if (options.EffectivePastFrames != options.PastFrames)
+            {
+                string layout = options.ShortContext == ShortContextPolicy.RepeatEarliest
+                    ? $"repeated to {options.KeyPastFrames} past keys (--past-policy repeat)"
+                    : $"fed alone as {options.KeyPastFrames} past keys (--past-policy feed)";
+                AnsiConsole.MarkupLine(Markup.Escape($"past frames: the last {options.EffectivePastFrames} of {options.PastFrames}, {layout}"));
+            }
+
             AnsiConsole.MarkupLine(Markup.Escape(
                 $"read {testBytes / 1e6:0.0} MB in {readSeconds:0.000} s ({testBytes / 1e6 / Math.Max(readSeconds, 1e-9):0} MB/s), evaluated in {evalSeconds:0.000} s, total {total.Elapsed.TotalSeconds:0.00} s"));
 
@@ -304,6 +337,16 @@ namespace DeltaInterpolator.Cli.Verbs
                         throw new CliErrors.UsageException($"{data}: the statistics computed from the training files hold {v.ToString(CultureInfo.InvariantCulture)}; expected finite motion values in the training files");
                     }
                 }
+            }
+        }
+
+        private static ShortContextPolicy ParsePolicy(string text)
+        {
+            switch (text)
+            {
+                case "feed": return ShortContextPolicy.FeedAvailable;
+                case "repeat": return ShortContextPolicy.RepeatEarliest;
+                default: throw new CliErrors.UsageException($"inbetween benchmark: --past-policy '{text}'; expected feed or repeat");
             }
         }
 
@@ -365,6 +408,8 @@ namespace DeltaInterpolator.Cli.Verbs
             w.WriteNumber("window", report.Window);
             w.WriteNumber("offset", report.Offset);
             w.WriteString("stats", statsSource);
+            w.WriteNumber("past_frames", report.FedPastFrames);
+            w.WriteString("past_policy", report.ShortContext == ShortContextPolicy.RepeatEarliest ? "repeat" : "feed");
             w.WriteStartObject("results");
             for (int m = 0; m < report.MethodIds.Count; m++)
             {

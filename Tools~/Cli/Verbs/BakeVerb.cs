@@ -1,0 +1,379 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Text;
+using DeltaInterpolator.Core.Baking;
+using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.IO;
+using DeltaInterpolator.Core.Skeletons;
+using DeltaInterpolator.OnnxRuntime;
+using Spectre.Console;
+
+namespace DeltaInterpolator.Cli.Verbs
+{
+    /// <summary>
+    /// <c>inbetween bake IN.bvh --keys …|--every K --out OUT.bvh</c>: keeps the key frames of a BVH file,
+    /// fills every gap between them with the model or SLERP (Core's <see cref="ClipBaker"/>), writes the
+    /// chosen method's BVH and prints both methods' error against the file's own frames.
+    /// </summary>
+    public sealed class BakeVerb : ICliVerb
+    {
+        private const string ShippedModel = "Runtime/Models/DeltaInterpolator-LaFAN1.onnx";
+        private const string DefaultStats = "../shared/data/lafan1/train_stats_official.json";
+
+        private readonly Argument<string> _input = new Argument<string>("IN.bvh")
+        {
+            Description = "BVH file on the model's skeleton at its frame rate (LaFAN1, 30 fps); its frames are the keys' source and the ground truth.",
+        };
+
+        private readonly Option<string?> _keys = new Option<string?>("--keys")
+        {
+            Description = "Key frame indices of IN.bvh, increasing, comma-separated (at least two). The output spans the first to the last key.",
+            HelpName = "F,F,...",
+        };
+
+        private readonly Option<int?> _every = new Option<int?>("--every")
+        {
+            Description = "A key every K frames: 0, K, 2K, … and the file's last frame.",
+            HelpName = "K",
+        };
+
+        private readonly Option<string> _method = new Option<string>("--method")
+        {
+            Description = "Which method's result OUT.bvh holds: the neural model or SLERP (both are always scored).",
+            HelpName = "model|slerp",
+            DefaultValueFactory = _ => "model",
+        };
+
+        private readonly Option<string?> _model = new Option<string?>("--model")
+        {
+            Description = "Exported model (NAME.onnx). Default: the shipped " + ShippedModel + ".",
+            HelpName = "FILE.onnx",
+        };
+
+        private readonly Option<string> _pastPolicy = new Option<string>("--past-policy")
+        {
+            Description = "What the model gets where fewer past frames exist than it wants (a clip's first gaps): 'auto' from the model's trained past range (fixed 10 → repeat, from 1 → feed), 'feed' the frames that exist, 'repeat' the earliest repeated.",
+            HelpName = "auto|feed|repeat",
+            DefaultValueFactory = _ => "auto",
+        };
+
+        private readonly Option<string> _context = new Option<string>("--context")
+        {
+            Description = "Past context of a gap: 'filled' = key frames and frames already filled (default), 'keys' = key frames only (the key before the gap, laid out by --past-policy).",
+            HelpName = "filled|keys",
+            DefaultValueFactory = _ => "filled",
+        };
+
+        private readonly Option<string> _out = new Option<string>("--out")
+        {
+            Description = "Output BVH file (same joints and channels as IN.bvh).",
+            HelpName = "OUT.bvh",
+            Required = true,
+        };
+
+        private readonly Option<bool> _force = new Option<bool>("--force")
+        {
+            Description = "Replace OUT.bvh when it exists.",
+        };
+
+        private readonly Option<string?> _stats = new Option<string?>("--stats")
+        {
+            Description = "Statistics JSON for L2P on LaFAN1-skeleton files. Default: " + DefaultStats + " when present.",
+            HelpName = "FILE",
+        };
+
+        private readonly Option<int> _threads = new Option<int>("--threads")
+        {
+            Description = "ONNX Runtime intra-op threads.",
+            HelpName = "N",
+            DefaultValueFactory = _ => 1,
+        };
+
+        /// <inheritdoc />
+        public Command CreateCommand()
+        {
+            var command = new Command(
+                "bake",
+                "Keep a BVH file's key frames and fill every gap between them, in order, with the neural model (past context: up to\n" +
+                "the model's past frames before the gap, keys and frames already filled; future: the next key) or with SLERP.\n" +
+                "Writes the chosen method's BVH and prints, for both methods, the error against the file's own frames on the\n" +
+                "non-key frames: mean global joint position error (file units), L2Q, and L2P with the official statistics for\n" +
+                "LaFAN1-skeleton files. Gaps outside the model's trained lengths are baked with a warning; a gap its graph cannot\n" +
+                "take is refused.\n" +
+                "Example:\n" +
+                "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force");
+            command.Arguments.Add(_input);
+            command.Options.Add(_keys);
+            command.Options.Add(_every);
+            command.Options.Add(_method);
+            command.Options.Add(_model);
+            command.Options.Add(_pastPolicy);
+            command.Options.Add(_context);
+            command.Options.Add(_out);
+            command.Options.Add(_force);
+            command.Options.Add(_stats);
+            command.Options.Add(_threads);
+            command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
+            return command;
+        }
+
+        private int Run(ParseResult parse)
+        {
+            var total = Stopwatch.StartNew();
+            string input = parse.GetValue(_input)!;
+            string? keysText = parse.GetValue(_keys);
+            int? every = parse.GetValue(_every);
+            string method = parse.GetValue(_method)!;
+            string outPath = parse.GetValue(_out)!;
+            bool force = parse.GetValue(_force);
+            int threads = parse.GetValue(_threads);
+            ShortContextPolicy? policy = ParsePolicy(parse.GetValue(_pastPolicy)!);
+
+            if ((keysText == null) == (every == null))
+            {
+                throw new CliErrors.UsageException("inbetween bake: " + (keysText == null ? "neither --keys nor --every given" : "both --keys and --every given") + "; expected exactly one of them");
+            }
+
+            if (method != "model" && method != "slerp")
+            {
+                throw new CliErrors.UsageException($"inbetween bake: --method '{method}'; expected model or slerp");
+            }
+
+            string context = parse.GetValue(_context)!;
+            if (context != "filled" && context != "keys")
+            {
+                throw new CliErrors.UsageException($"inbetween bake: --context '{context}'; expected filled or keys");
+            }
+
+            if (threads < 1) throw new CliErrors.UsageException($"inbetween bake: --threads {threads}; expected 1 or more");
+            if (!File.Exists(input)) throw new CliErrors.UsageException($"{input}: no such file; expected a .bvh file");
+            string modelPath = parse.GetValue(_model) ?? DefaultModelPath();
+            if (!File.Exists(modelPath)) throw new CliErrors.UsageException($"{modelPath}: no such file; expected an exported model (NAME.onnx), e.g. {ShippedModel}");
+            string? statsGiven = parse.GetValue(_stats);
+            if (statsGiven != null && !File.Exists(statsGiven)) throw new CliErrors.UsageException($"{statsGiven}: no such file; expected a statistics JSON such as {DefaultStats}");
+            string? statsPath = statsGiven ?? (File.Exists(DefaultStats) ? DefaultStats : null);
+
+            // Before any work: the output must be writable and must not replace an input.
+            string outFull = OutputFile.Check(outPath, force, input, modelPath, statsPath);
+
+            var read = Stopwatch.StartNew();
+            BvhAnimation animation = BvhReader.Read(input);
+            double readSeconds = read.Elapsed.TotalSeconds;
+            int[] inputKeys = keysText != null ? ParseKeys(keysText, input) : EveryKeys(every!.Value, animation.Motion.FrameCount, input);
+
+            var load = Stopwatch.StartNew();
+            // The whole graph only: baking runs whole transitions, so the lazy graphs would only cost load time.
+            using var model = new Inbetweener(OnnxRuntimeBackend.Load(modelPath, new OnnxRuntimeOptions { IntraOpThreads = threads }));
+            double loadSeconds = load.Elapsed.TotalSeconds;
+
+            // ---- Retargeting seam: input skeleton and rate → model skeleton and rate. ----
+            var retargeting = new SameSkeleton(model.Contract, input);
+            retargeting.Check(animation);
+            IBakeRetargeting seam = retargeting;
+            MotionClip source = seam.ToModel(animation);
+            int[] modelKeys = seam.KeysToModel(inputKeys);
+
+            BakeSettings modelSettings = BakeSettings.ForModel(model.Contract, policy);
+            modelSettings.FilledFramesAsContext = context == "filled";
+            var modelBaker = new ClipBaker(model, modelSettings);
+            var slerpBaker = new ClipBaker(new SlerpBaseline(), BakeSettings.ForBaseline("SLERP"));
+            BakePlan modelPlan = Plan(modelBaker, source.FrameCount, modelKeys, input);
+            BakePlan slerpPlan = Plan(slerpBaker, source.FrameCount, modelKeys, input);
+
+            BenchmarkStatistics? statistics = LoadStatistics(statsPath, statsGiven != null, animation.Skeleton, input);
+
+            MotionClip? modelClip = null, slerpClip = null;
+            double modelSeconds = 0, slerpSeconds = 0;
+            IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings
+            {
+                Out = new AnsiConsoleOutput(Console.Error),
+                Interactive = Console.IsErrorRedirected ? InteractionSupport.No : InteractionSupport.Detect,
+            });
+            progressConsole.Progress()
+                .AutoClear(true)
+                .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn(), new RemainingTimeColumn())
+                .Start(ctx =>
+                {
+                    IProgress<int>? reporter = Console.IsErrorRedirected ? null : new GapProgress(new SpectreProgress(ctx), modelPlan.Gaps.Count);
+                    var sw = Stopwatch.StartNew();
+                    modelClip = modelBaker.Bake(source, modelPlan, reporter);
+                    modelSeconds = sw.Elapsed.TotalSeconds;
+                    sw.Restart();
+                    slerpClip = slerpBaker.Bake(source, slerpPlan);
+                    slerpSeconds = sw.Elapsed.TotalSeconds;
+                });
+
+            // ---- Retargeting seam: model skeleton and rate → input skeleton and rate. ----
+            MotionClip modelOut = seam.FromModel(modelClip!, animation, inputKeys);
+            MotionClip slerpOut = seam.FromModel(slerpClip!, animation, inputKeys);
+
+            MotionClip chosen = method == "model" ? modelOut : slerpOut;
+            var written = new BvhAnimation(chosen, animation.JointChannels, animation.EndSites, outPath);
+            OutputFile.Write(outFull, stream =>
+            {
+                using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
+                BvhWriter.Write(written, writer);
+            });
+
+            double[]? std = statistics?.StandardDeviation;
+            BakeAccuracy modelScore = BakeAccuracy.Measure(animation.Motion, modelOut, inputKeys, std);
+            BakeAccuracy slerpScore = BakeAccuracy.Measure(animation.Motion, slerpOut, inputKeys, std);
+            PrintSummary(input, animation, inputKeys, modelPlan, modelBaker.Settings, model.Contract, seam, outPath, method,
+                modelScore, slerpScore, statistics, modelSeconds, slerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds);
+            return 0;
+        }
+
+        /// <summary>Gaps filled → one progress bar ("Baking gaps with the model"), updated synchronously.</summary>
+        private sealed class GapProgress : IProgress<int>
+        {
+            private readonly IProgress<BenchmarkProgress> _bars;
+            private readonly int _total;
+
+            public GapProgress(IProgress<BenchmarkProgress> bars, int total)
+            {
+                _bars = bars;
+                _total = total;
+            }
+
+            public void Report(int value) => _bars.Report(new BenchmarkProgress("Baking gaps with the model", value, _total));
+        }
+
+        private static BakePlan Plan(ClipBaker baker, int frameCount, int[] keys, string input)
+        {
+            try
+            {
+                return baker.Plan(frameCount, keys);
+            }
+            catch (KeyLayoutException e)
+            {
+                throw new CliErrors.UsageException($"{input}: {e.Message}");
+            }
+        }
+
+        private static BenchmarkStatistics? LoadStatistics(string? path, bool given, Skeleton skeleton, string input)
+        {
+            if (path == null) return null;
+            BenchmarkStatistics statistics = BenchmarkStatistics.Load(path);
+            try
+            {
+                statistics.SkeletonFor(skeleton, input);
+                return statistics;
+            }
+            catch (Core.DataFormatException) when (!given)
+            {
+                // The default statistics are LaFAN1's: another skeleton simply gets no L2P.
+                return null;
+            }
+        }
+
+        private static void PrintSummary(
+            string input, BvhAnimation animation, int[] keys, BakePlan plan, BakeSettings settings, ModelContract contract, IBakeRetargeting seam,
+            string outPath, string method, BakeAccuracy model, BakeAccuracy slerp, BenchmarkStatistics? statistics,
+            double modelSeconds, double slerpSeconds, double readSeconds, double loadSeconds, double totalSeconds)
+        {
+            foreach (string warning in plan.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(warning));
+            MotionClip motion = animation.Motion;
+            string unit = "file units";
+            var table = new Table().Border(TableBorder.Rounded)
+                .Title($"[bold]{Markup.Escape(Path.GetFileName(input))}[/]: error on the {model.Frames:N0} non-key frames (lower is better)");
+            table.AddColumn("Method");
+            table.AddColumn(new TableColumn($"Mean joint position error ({unit})").RightAligned());
+            table.AddColumn(new TableColumn("L2Q").RightAligned());
+            table.AddColumn(new TableColumn(statistics != null ? "L2P" : "L2P (no statistics)").RightAligned());
+            table.AddColumn(new TableColumn("Bake time (s)").RightAligned());
+            AddRow(table, "Model (" + Path.GetFileNameWithoutExtension(contract.Source) + ")", model, modelSeconds);
+            AddRow(table, "SLERP", slerp, slerpSeconds);
+            AnsiConsole.Write(table);
+
+            string policy = settings.ShortContext == ShortContextPolicy.RepeatEarliest ? "repeat the earliest" : "feed what exists";
+            string trained = settings.TrainedPastFrames is { } p ? $"trained on {p.Min}..{p.Max} past frames" : "trained past range unknown";
+            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
+                "{0:N0} frames at {1:0.##} fps, {2} keys ({3}{4}), {5} gaps; model context: up to {6} past frames ({10}), where fewer exist: {7} ({8}); {9}",
+                motion.FrameCount, 1.0 / motion.FrameTime, keys.Length, KeySummary(keys), plan.FrameCount < motion.FrameCount ? $"; output frames {keys[0]}..{keys[keys.Length - 1]}" : "",
+                plan.Gaps.Count, settings.PastFrames, policy, trained, seam.Description,
+                settings.FilledFramesAsContext ? "keys and filled frames" : "key frames only")));
+            if (statistics != null) AnsiConsole.MarkupLine(Markup.Escape($"L2P: per-coordinate std of {statistics.Source}, frames where they are in the file (no window normalisation); L2Q: global quaternions, each in the truth's hemisphere"));
+            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
+                "wrote {0} ({1}); read {2:0.000} s, model load {3:0.000} s, total {4:0.00} s",
+                outPath, method == "model" ? "model" : "SLERP", readSeconds, loadSeconds, totalSeconds)));
+        }
+
+        private static void AddRow(Table table, string name, BakeAccuracy a, double seconds)
+        {
+            table.AddRow(
+                Markup.Escape(name),
+                a.MeanPositionError.ToString("0.000", CultureInfo.InvariantCulture),
+                a.L2Q.ToString("0.0000", CultureInfo.InvariantCulture),
+                double.IsNaN(a.L2P) ? "-" : a.L2P.ToString("0.0000", CultureInfo.InvariantCulture),
+                seconds.ToString("0.000", CultureInfo.InvariantCulture));
+        }
+
+        private static string KeySummary(int[] keys)
+        {
+            if (keys.Length <= 6) return string.Join(",", keys);
+            return $"{keys[0]},{keys[1]},{keys[2]},…,{keys[keys.Length - 1]}";
+        }
+
+        private static ShortContextPolicy? ParsePolicy(string text)
+        {
+            switch (text)
+            {
+                case "auto": return null;
+                case "feed": return ShortContextPolicy.FeedAvailable;
+                case "repeat": return ShortContextPolicy.RepeatEarliest;
+                default: throw new CliErrors.UsageException($"inbetween bake: --past-policy '{text}'; expected auto, feed or repeat");
+            }
+        }
+
+        private static int[] ParseKeys(string text, string input)
+        {
+            var keys = new List<int>();
+            foreach (string part in text.Split(','))
+            {
+                string p = part.Trim();
+                if (!int.TryParse(p, NumberStyles.None, CultureInfo.InvariantCulture, out int k))
+                {
+                    throw new CliErrors.UsageException($"{input}: --keys '{text}' has '{p}'; expected comma-separated frame indices such as 0,12,40");
+                }
+
+                keys.Add(k);
+            }
+
+            return keys.ToArray();
+        }
+
+        private static int[] EveryKeys(int interval, int frameCount, string input)
+        {
+            try
+            {
+                return KeyFrames.Every(interval, frameCount);
+            }
+            catch (KeyLayoutException e)
+            {
+                throw new CliErrors.UsageException($"{input}: --every {interval}: {e.Message}");
+            }
+        }
+
+        /// <summary>The shipped model: relative to the working directory, else in the checkout this tool was built in.</summary>
+        private static string DefaultModelPath()
+        {
+            if (File.Exists(ShippedModel)) return ShippedModel;
+            string? dir = AppContext.BaseDirectory;
+            while (dir != null)
+            {
+                string candidate = Path.Combine(dir, ShippedModel);
+                if (File.Exists(candidate)) return candidate;
+                dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
+            }
+
+            return ShippedModel;
+        }
+    }
+}
