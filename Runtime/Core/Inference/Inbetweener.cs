@@ -179,11 +179,12 @@ namespace DeltaInterpolator.Core.Inference
 
         internal void CheckLength(int pastFrames, int missingFrames)
         {
-            if (pastFrames < 1 || missingFrames < 1) throw new ArgumentException($"P = {pastFrames}, n = {missingFrames}; expected at least one past key and one missing frame");
-            if (pastFrames + missingFrames > Contract.MaxFrameIndex)
-            {
-                throw new ArgumentException($"P + n = {pastFrames} + {missingFrames} = {pastFrames + missingFrames} exceeds the model's largest frame index {Contract.MaxFrameIndex}; use fewer past keys or split the gap");
-            }
+            // Only errors refuse a request; training-range warnings are for tools and the inspector
+            // (ModelChecks.Request), since a game may ask for longer gaps on purpose.
+            var report = new ModelCheckReport();
+            ModelChecks.Request(Contract, pastFrames, missingFrames, report);
+            ModelCheck? error = report.FirstError;
+            if (error != null) throw new ArgumentException(error.Message + "; " + error.Remedy);
         }
 
         /// <summary>
