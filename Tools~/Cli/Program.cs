@@ -16,6 +16,7 @@ namespace DeltaInterpolator.Cli
         private static ICliVerb[] Verbs => new ICliVerb[]
         {
             new BenchmarkVerb(),
+            new CheckVerb(),
             new InfoVerb(),
             new SpeedVerb(),
         };
@@ -33,6 +34,7 @@ namespace DeltaInterpolator.Cli
                 "Reads BVH motion capture, runs the official LaFAN1 in-betweening benchmark and (later) neural models.\n\n" +
                 "Examples:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
+                "  inbetween check Runtime/Models/DeltaInterpolator-LaFAN1.onnx --past 10 --gap 60\n" +
                 "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n\n" +
                 "Run 'inbetween VERB --help' for a verb's options.");
             foreach (ICliVerb verb in Verbs) root.Subcommands.Add(verb.CreateCommand());

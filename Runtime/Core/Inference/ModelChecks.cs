@@ -190,7 +190,7 @@ namespace DeltaInterpolator.Core.Inference
             if (pMax > 0 && (pastFrames < pMin || pastFrames > pMax))
             {
                 report.Warning(src, $"the request has {pastFrames} past key frames but the model was trained with {Span(pMin, pMax)}",
-                    $"expected P in [{pMin}, {pMax}] for results like the model card's; give {(pastFrames < pMin ? "more" : "fewer")} past frames, or retrain with --min-past/--max-past covering {pastFrames}");
+                    $"expected P in [{pMin}, {pMax}] for results like the model card's; give {(pastFrames < pMin ? "more" : "fewer")} past frames{(pastFrames < pMin ? $", or retrain with --min-past {pastFrames}" : "")}");
             }
 
             (int nMin, int nMax) = contract.TrainingMissingFrames;
