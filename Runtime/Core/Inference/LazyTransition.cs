@@ -1,5 +1,4 @@
 using System;
-using System.Collections.Generic;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Rotations;
 
@@ -20,12 +19,8 @@ namespace DeltaInterpolator.Core.Inference
         private readonly double[] _localRoot;
         private readonly double[] _localRotations;
         private readonly SlerpPair[] _pairs;
-        private readonly InferenceTensor _keyFeatures;
-        private readonly InferenceTensor _keyFrames;
-        private readonly InferenceTensor _gap;
-        private readonly InferenceTensor _query;
-        private readonly InferenceTensor _rootDelta;
-        private readonly InferenceTensor _rotationDelta;
+        private readonly GraphTensors _keys;
+        private readonly GraphTensors _frame;
         private readonly IInferenceBinding _keysBinding;
         private readonly IInferenceBinding _frameBinding;
         private Transition? _transition;
@@ -41,18 +36,14 @@ namespace DeltaInterpolator.Core.Inference
             _localRoot = new double[k * 3];
             _localRotations = new double[k * c.JointCount * 4];
             _pairs = new SlerpPair[c.JointCount];
-            _keyFeatures = InferenceTensor.Float(TensorNames.KeyFeatures, 1, k, c.KeyFeatureSize);
-            _keyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, k);
-            _gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
-            _query = InferenceTensor.Int64(TensorNames.QueryFrameIndices, 1);
-            KeyMemory = InferenceTensor.Float(TensorNames.KeyMemory, c.Architecture.Blocks, 2, k, c.Architecture.Width);
-            _rootDelta = InferenceTensor.Float(TensorNames.RootPositionDelta, 1, 1, 3);
-            _rotationDelta = InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, 1, c.JointCount, 6);
+            _keys = GraphTensors.Create(c, ModelGraphKind.Keys, pastFrames, missingFrames, 0);
+            _frame = GraphTensors.ForFrame(c, _keys, 1);
+            KeyMemory = _keys.KeyMemory!;
             // The same key_memory array is the keys graph's output and the frame graph's input: no copy.
-            _keysBinding = keys.Bind(new[] { _keyFeatures, _keyFrames, _gap }, new[] { KeyMemory });
+            _keysBinding = _keys.Bind(keys);
             try
             {
-                _frameBinding = frame.Bind(new[] { KeyMemory, _query, _gap }, new List<InferenceTensor> { _rootDelta, _rotationDelta });
+                _frameBinding = _frame.Bind(frame);
             }
             catch
             {
@@ -84,7 +75,7 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             _owner.CheckSkeleton(transition.Skeleton);
-            _localization = _owner.LocalizeAndBuild(transition, _localRoot, _localRotations, _pairs, _keyFeatures, _keyFrames, _gap);
+            _localization = _owner.LocalizeAndBuild(transition, _localRoot, _localRotations, _pairs, _keys.KeyFeatures!);
             _keysBinding.Run();
             _transition = transition;
         }
@@ -98,9 +89,9 @@ namespace DeltaInterpolator.Core.Inference
         {
             Transition t = _transition ?? throw new InvalidOperationException("call Begin(transition) before DecodeFrame");
             if ((uint)k >= (uint)MissingFrames) throw new ArgumentOutOfRangeException(nameof(k), $"missing frame {k}; expected 0..{MissingFrames - 1}");
-            _query.Longs![0] = PastFrames + k;
+            _frame.SetQuery(k);
             _frameBinding.Run();
-            _owner.Decode(t, _localization, _localRoot, _pairs, _rootDelta.Floats!, _rotationDelta.Floats!, 0, k);
+            _owner.Decode(t, _localization, _localRoot, _pairs, _frame.RootPositionDelta!.Floats!, _frame.Rotation6DDelta!.Floats!, 0, k);
         }
 
         internal void DisposeBindings()

@@ -67,6 +67,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Origin = Flatten(loc.ExpectMember("origin"));
             JsonValue inputs = c.ExpectMember("inputs");
             KeyFeatures = Flatten(inputs.ExpectMember("key_features"));
+            KeyFrameIndices = Flatten(inputs.ExpectMember("key_frame_indices"));
+            QueryFrameIndices = Flatten(inputs.ExpectMember("query_frame_indices"));
+            GapLength = Flatten(inputs.ExpectMember("gap_length"));
             JsonValue outputs = c.ExpectMember("outputs");
             RootPositionDelta = Flatten(outputs.ExpectMember("root_position_delta"));
             Rotation6DDelta = Flatten(outputs.ExpectMember("rotation_6d_delta"));
@@ -86,6 +89,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public double[] Yaw { get; }
         public double[] Origin { get; }
         public double[] KeyFeatures { get; }
+        public double[] KeyFrameIndices { get; }
+        public double[] QueryFrameIndices { get; }
+        public double[] GapLength { get; }
         public double[] RootPositionDelta { get; }
         public double[] Rotation6DDelta { get; }
         public double[] RootPositions { get; }
