@@ -27,7 +27,7 @@ namespace DeltaInterpolator.Core.Inference
         private readonly IInferenceBackend? _frame;
         private readonly KeyFeatureBuilder _features;
         private readonly Dictionary<long, Workspace> _workspaces = new Dictionary<long, Workspace>();
-        private readonly List<LazyTransition> _lazy = new List<LazyTransition>();
+        private readonly List<LazyDecoder> _lazy = new List<LazyDecoder>();
         private Skeleton? _checkedSkeleton;
         private Workspace? _last;
         private bool _disposed;
@@ -92,16 +92,16 @@ namespace DeltaInterpolator.Core.Inference
         public string DisplayName { get; set; } = "Δ-Interp.";
 
         /// <summary>The <c>key_features</c> fed by the last whole-transition call (K × 9J), for diagnostics and parity tests.</summary>
-        public ReadOnlySpan<float> LastKeyFeatures => _last == null ? default : _last.Tensors.KeyFeatures!.Floats;
+        internal ReadOnlySpan<float> LastKeyFeatures => _last == null ? default : _last.Tensors.KeyFeatures!.Floats;
 
         /// <summary>The raw <c>root_position_delta</c> of the last whole-transition call (n × 3).</summary>
-        public ReadOnlySpan<float> LastRootPositionDelta => _last == null ? default : _last.Tensors.RootPositionDelta!.Floats;
+        internal ReadOnlySpan<float> LastRootPositionDelta => _last == null ? default : _last.Tensors.RootPositionDelta!.Floats;
 
         /// <summary>The raw <c>rotation_6d_delta</c> of the last whole-transition call (n × J × 6).</summary>
-        public ReadOnlySpan<float> LastRotation6DDelta => _last == null ? default : _last.Tensors.Rotation6DDelta!.Floats;
+        internal ReadOnlySpan<float> LastRotation6DDelta => _last == null ? default : _last.Tensors.Rotation6DDelta!.Floats;
 
         /// <summary>The localization of the last whole-transition call.</summary>
-        public Localization LastLocalization { get; private set; }
+        internal Localization LastLocalization { get; private set; }
 
         /// <summary>
         /// Fills every missing frame of <paramref name="transition"/> in one network run.
@@ -133,14 +133,14 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>
         /// A reusable lazy decoder for transitions of P past keys and n missing frames: it encodes the
-        /// keys once per transition (<see cref="LazyTransition.Begin"/>) and decodes frames one at a time
-        /// (<see cref="LazyTransition.DecodeFrame"/>), each costing a fraction of a whole transition.
+        /// keys once per transition (<see cref="LazyDecoder.Begin"/>) and decodes frames one at a time
+        /// (<see cref="LazyDecoder.DecodeFrame"/>), each costing a fraction of a whole transition.
         /// Owned by this inbetweener (disposed with it): create one per shape and reuse it for every
         /// transition of that shape, since each holds its own buffers and backend bindings until
         /// <see cref="Dispose"/>.
         /// </summary>
         /// <exception cref="InvalidOperationException">The lazy graphs were not loaded.</exception>
-        public LazyTransition CreateLazy(int pastFrames, int missingFrames)
+        public LazyDecoder CreateLazy(int pastFrames, int missingFrames)
         {
             ThrowIfDisposed();
             if (_keys == null || _frame == null)
@@ -149,7 +149,7 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             CheckLength(pastFrames, missingFrames);
-            var lazy = new LazyTransition(this, _keys, _frame, pastFrames, missingFrames);
+            var lazy = new LazyDecoder(this, _keys, _frame, pastFrames, missingFrames);
             _lazy.Add(lazy);
             return lazy;
         }
@@ -159,7 +159,7 @@ namespace DeltaInterpolator.Core.Inference
         {
             if (_disposed) return;
             _disposed = true;
-            foreach (LazyTransition l in _lazy) l.DisposeBindings();
+            foreach (LazyDecoder l in _lazy) l.DisposeBindings();
             foreach (Workspace w in _workspaces.Values) w.Binding.Dispose();
             _workspaces.Clear();
             _whole.Dispose();

@@ -53,7 +53,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// <summary>One golden case: a request, the PyTorch pipeline's intermediate values and its result.</summary>
     public sealed class GoldenCase
     {
-        public GoldenCase(JsonValue c)
+        internal GoldenCase(JsonValue c)
         {
             Name = c.ExpectMember("name").ExpectString("name");
             PastFrames = (int)c.ExpectMember("past_frames").ExpectNumber("past_frames");

@@ -122,7 +122,7 @@ namespace DeltaInterpolator.Cli.Verbs
             if (model.SupportsLazyDecoding)
             {
                 Transition t = SyntheticRequest(contract, 30);
-                LazyTransition lazy = model.CreateLazy(PastFrames, 30);
+                LazyDecoder lazy = model.CreateLazy(PastFrames, 30);
                 results["lazy_keys_ms"] = Measure(() => lazy.Begin(t), repeats, 1e3).ToJson();
                 int k = 0;
                 Timing frame = Measure(() => lazy.DecodeFrame(k = (k + 1) % 30), repeats, 1e3);

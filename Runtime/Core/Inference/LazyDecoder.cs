@@ -13,7 +13,7 @@ namespace DeltaInterpolator.Core.Inference
     /// </summary>
     /// <remarks>Created by <see cref="Inbetweener.CreateLazy"/>; reusable for any number of transitions of
     /// its shape; allocation-free after creation; not thread-safe.</remarks>
-    public sealed class LazyTransition
+    public sealed class LazyDecoder
     {
         private readonly Inbetweener _owner;
         private readonly double[] _localRoot;
@@ -26,7 +26,7 @@ namespace DeltaInterpolator.Core.Inference
         private Transition? _transition;
         private Localization _localization;
 
-        internal LazyTransition(Inbetweener owner, IInferenceBackend keys, IInferenceBackend frame, int pastFrames, int missingFrames)
+        internal LazyDecoder(Inbetweener owner, IInferenceBackend keys, IInferenceBackend frame, int pastFrames, int missingFrames)
         {
             _owner = owner;
             ModelContract c = owner.Contract;
