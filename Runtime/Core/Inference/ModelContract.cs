@@ -279,6 +279,17 @@ namespace DeltaInterpolator.Core.Inference
         }
 
         /// <summary>
+        /// The <c>metadata_props</c> an exported graph carries for this contract (<c>contract_version</c> and
+        /// <c>deltainterp</c> = <see cref="ToJson"/>): what a backend whose engine keeps no ONNX metadata (Sentis)
+        /// passes in its <see cref="ModelDescription"/> when the contract was stored in an asset at import.
+        /// </summary>
+        public IReadOnlyDictionary<string, string> ToMetadata() => new Dictionary<string, string>(StringComparer.Ordinal)
+        {
+            [TensorNames.ContractVersionMetadata] = ContractVersion.ToString(CultureInfo.InvariantCulture),
+            [TensorNames.DescriptionMetadata] = ToJson(),
+        };
+
+        /// <summary>
         /// Checks that poses given on <paramref name="skeleton"/> can be fed to this model
         /// (<see cref="ModelChecks.Skeleton"/>) and throws at the first error.
         /// </summary>

@@ -34,6 +34,12 @@ namespace DeltaInterpolator.Tests.Inference
             ModelContract c = ModelContract.FromMetadata(path, metadata, report)!;
             Assert.That(report.HasErrors, Is.False);
             RoundTrip(c, metadata[TensorNames.DescriptionMetadata]);
+            // What an asset-backed backend passes: the stored contract as metadata reads back the same.
+            var again = new ModelCheckReport();
+            ModelContract fromAsset = ModelContract.FromMetadata("asset", c.ToMetadata(), again)!;
+            Assert.That(again.HasErrors, Is.False);
+            Assert.That(fromAsset.ToJson(), Is.EqualTo(c.ToJson()));
+            Assert.That(c.ToMetadata()[TensorNames.ContractVersionMetadata], Is.EqualTo(metadata[TensorNames.ContractVersionMetadata]));
         }
 
         [Test]
