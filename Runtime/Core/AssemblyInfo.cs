@@ -4,6 +4,8 @@ using System.Runtime.CompilerServices;
 // Unity glue, editor, evaluation) also see Core's internals. Assembly names as in their .asmdef / .csproj.
 [assembly: InternalsVisibleTo("DeltaInterpolator.Tests")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.OnnxRuntime.Tests")]
+[assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation.Tests")]
+[assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation.OnnxRuntime.Tests")]
 [assembly: InternalsVisibleTo("inbetween")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.Benchmarks")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation")]

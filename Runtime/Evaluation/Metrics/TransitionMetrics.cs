@@ -1,6 +1,6 @@
 using System;
 
-namespace DeltaInterpolator.Core.Metrics
+namespace DeltaInterpolator.Evaluation.Metrics
 {
     /// <summary>
     /// The per-frame errors of the official LaFAN1 benchmark, summed over frames so that callers can

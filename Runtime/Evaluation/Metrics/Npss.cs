@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using System.Runtime.InteropServices;
 
-namespace DeltaInterpolator.Core.Metrics
+namespace DeltaInterpolator.Evaluation.Metrics
 {
     /// <summary>
     /// Normalised Power Spectrum Similarity exactly as the official <c>fast_npss</c> computes it, for

@@ -1,8 +1,8 @@
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Metrics;
+using DeltaInterpolator.Evaluation.Metrics;
 
-namespace DeltaInterpolator.Core.Benchmark
+namespace DeltaInterpolator.Evaluation.Benchmark
 {
     /// <summary>The result of one benchmark run: metric totals per method and transition length.</summary>
     public sealed class BenchmarkReport
@@ -46,7 +46,7 @@ namespace DeltaInterpolator.Core.Benchmark
         /// <summary>Where the statistics came from.</summary>
         public string StatisticsSource { get; }
 
-        /// <summary>Method keys (<see cref="Inbetweening.IInbetweener.Id"/>), in the order evaluated.</summary>
+        /// <summary>Method keys (<see cref="Core.Inbetweening.IInbetweener.Id"/>), in the order evaluated.</summary>
         public IReadOnlyList<string> MethodIds { get; }
 
         /// <summary>Method display names, parallel to <see cref="MethodIds"/>.</summary>

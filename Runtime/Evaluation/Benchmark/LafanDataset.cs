@@ -2,9 +2,10 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Threading.Tasks;
+using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Bvh;
 
-namespace DeltaInterpolator.Core.Benchmark
+namespace DeltaInterpolator.Evaluation.Benchmark
 {
     /// <summary>
     /// LaFAN1's file naming and split: files are <c>&lt;theme&gt;&lt;take&gt;_subject&lt;k&gt;.bvh</c>;

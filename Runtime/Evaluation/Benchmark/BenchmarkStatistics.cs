@@ -3,12 +3,13 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Text;
+using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Json;
 using DeltaInterpolator.Core.Kinematics;
 using DeltaInterpolator.Core.Skeletons;
 
-namespace DeltaInterpolator.Core.Benchmark
+namespace DeltaInterpolator.Evaluation.Benchmark
 {
     /// <summary>
     /// The benchmark's normalisation statistics: per-coordinate mean and population standard deviation

@@ -1,5 +1,5 @@
 using System;
-using DeltaInterpolator.Core.Metrics;
+using DeltaInterpolator.Evaluation.Metrics;
 using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.Metrics

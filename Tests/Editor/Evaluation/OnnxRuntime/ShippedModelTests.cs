@@ -1,11 +1,11 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
-using DeltaInterpolator.Core.Metrics;
+using DeltaInterpolator.Evaluation.Metrics;
 using DeltaInterpolator.OnnxRuntime;
 using NUnit.Framework;
 

@@ -1,4 +1,4 @@
-namespace DeltaInterpolator.Core.Metrics
+namespace DeltaInterpolator.Evaluation.Metrics
 {
     /// <summary>
     /// Running sums of the three benchmark metrics for one method and one transition length, in

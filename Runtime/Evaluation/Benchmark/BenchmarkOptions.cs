@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Rotations;
 
-namespace DeltaInterpolator.Core.Benchmark
+namespace DeltaInterpolator.Evaluation.Benchmark
 {
     /// <summary>
     /// How the LaFAN1 benchmark cuts and normalises windows. Defaults are the official test protocol:

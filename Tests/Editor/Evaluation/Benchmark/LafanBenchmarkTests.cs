@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using DeltaInterpolator.Core;
-using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Rotations;

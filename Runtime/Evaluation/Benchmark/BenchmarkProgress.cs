@@ -1,4 +1,4 @@
-namespace DeltaInterpolator.Core.Benchmark
+namespace DeltaInterpolator.Evaluation.Benchmark
 {
     /// <summary>Progress of a long benchmark step, for progress bars.</summary>
     public readonly struct BenchmarkProgress

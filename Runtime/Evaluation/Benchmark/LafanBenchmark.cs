@@ -1,13 +1,14 @@
 using System;
 using System.Collections.Generic;
+using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Kinematics;
-using DeltaInterpolator.Core.Metrics;
+using DeltaInterpolator.Evaluation.Metrics;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
-namespace DeltaInterpolator.Core.Benchmark
+namespace DeltaInterpolator.Evaluation.Benchmark
 {
     /// <summary>
     /// The official LaFAN1 in-betweening benchmark (Harvey et al. 2020; method-spec §1) for any
