@@ -71,10 +71,13 @@ namespace DeltaInterpolator.OnnxRuntime
                 sessionOptions.AddSessionConfigEntry("session.intra_op.allow_spinning", "0");
             }
 
+            // One read of the file: ONNX Runtime loads the graph from these bytes and Core reads the
+            // contract's metadata from the same bytes, as every backend does (OnnxMetadataReader).
+            byte[] bytes = File.ReadAllBytes(path);
             InferenceSession session;
             try
             {
-                session = new InferenceSession(path, sessionOptions);
+                session = new InferenceSession(bytes, sessionOptions);
             }
             catch (OnnxRuntimeException e)
             {
@@ -88,7 +91,7 @@ namespace DeltaInterpolator.OnnxRuntime
 
             try
             {
-                return new OnnxRuntimeBackend(session, Describe(path, session));
+                return new OnnxRuntimeBackend(session, Describe(path, session, OnnxMetadataReader.Read(bytes, path)));
             }
             catch
             {
@@ -152,14 +155,8 @@ namespace DeltaInterpolator.OnnxRuntime
             }
         }
 
-        private static ModelDescription Describe(string path, InferenceSession session)
+        private static ModelDescription Describe(string path, InferenceSession session, IReadOnlyDictionary<string, string> metadata)
         {
-            var metadata = new Dictionary<string, string>(StringComparer.Ordinal);
-            foreach (KeyValuePair<string, string> kv in session.ModelMetadata.CustomMetadataMap)
-            {
-                metadata[kv.Key] = kv.Value;
-            }
-
             return new ModelDescription(path, Tensors(session.InputMetadata, session.InputNames), Tensors(session.OutputMetadata, session.OutputNames), metadata);
         }
 

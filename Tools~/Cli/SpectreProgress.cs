@@ -1,6 +1,6 @@
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Evaluation.Benchmark;
 using Spectre.Console;
 
 namespace DeltaInterpolator.Cli

@@ -11,7 +11,7 @@ namespace DeltaInterpolator.Core.IO
     /// write everything to a temporary file beside it and rename it into place (<see cref="Write"/>), so a
     /// failing or interrupted write leaves an existing file byte-identical and never leaves half a file.
     /// </summary>
-    public static class OutputFile
+    internal static class OutputFile
     {
         /// <summary>
         /// Refuses, with <see cref="OutputPathException"/>, a target that cannot or must not be written: a

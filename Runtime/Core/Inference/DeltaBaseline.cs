@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Core.Inference
     /// normalise(slerp(normalise(q_r), normalise(q_target), a)) with the official benchmark's
     /// <see cref="Quaternions.Slerp"/>. Works on localized values.
     /// </summary>
-    public static class DeltaBaseline
+    internal static class DeltaBaseline
     {
         /// <summary>The interpolation weight of missing frame <paramref name="k"/> (0-based) of a gap of <paramref name="n"/>: (k + 1) / (n + 1).</summary>
         public static double Weight(int k, int n) => Inbetweening.SlerpBaseline.Weight(k, n);

@@ -27,7 +27,7 @@ namespace DeltaInterpolator.Core.Inference
         private readonly IInferenceBackend? _frame;
         private readonly KeyFeatureBuilder _features;
         private readonly Dictionary<long, Workspace> _workspaces = new Dictionary<long, Workspace>();
-        private readonly List<LazyTransition> _lazy = new List<LazyTransition>();
+        private readonly List<LazyDecoder> _lazy = new List<LazyDecoder>();
         private Skeleton? _checkedSkeleton;
         private Workspace? _last;
         private bool _disposed;
@@ -92,16 +92,16 @@ namespace DeltaInterpolator.Core.Inference
         public string DisplayName { get; set; } = "Δ-Interp.";
 
         /// <summary>The <c>key_features</c> fed by the last whole-transition call (K × 9J), for diagnostics and parity tests.</summary>
-        public ReadOnlySpan<float> LastKeyFeatures => _last == null ? default : _last.KeyFeatures.Floats;
+        internal ReadOnlySpan<float> LastKeyFeatures => _last == null ? default : _last.Tensors.KeyFeatures!.Floats;
 
         /// <summary>The raw <c>root_position_delta</c> of the last whole-transition call (n × 3).</summary>
-        public ReadOnlySpan<float> LastRootPositionDelta => _last == null ? default : _last.RootDelta.Floats;
+        internal ReadOnlySpan<float> LastRootPositionDelta => _last == null ? default : _last.Tensors.RootPositionDelta!.Floats;
 
         /// <summary>The raw <c>rotation_6d_delta</c> of the last whole-transition call (n × J × 6).</summary>
-        public ReadOnlySpan<float> LastRotation6DDelta => _last == null ? default : _last.RotationDelta.Floats;
+        internal ReadOnlySpan<float> LastRotation6DDelta => _last == null ? default : _last.Tensors.Rotation6DDelta!.Floats;
 
         /// <summary>The localization of the last whole-transition call.</summary>
-        public Localization LastLocalization { get; private set; }
+        internal Localization LastLocalization { get; private set; }
 
         /// <summary>
         /// Fills every missing frame of <paramref name="transition"/> in one network run.
@@ -111,7 +111,6 @@ namespace DeltaInterpolator.Core.Inference
         public void Inbetween(Transition transition)
         {
             Workspace w = Prepare(transition);
-            FrameIndexBuilder.QueryFrames(transition.PastFrames, 0, w.QueryFrames.Longs);
             w.Binding.Run();
             _last = w;
             LastLocalization = w.Localization;
@@ -134,14 +133,14 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>
         /// A reusable lazy decoder for transitions of P past keys and n missing frames: it encodes the
-        /// keys once per transition (<see cref="LazyTransition.Begin"/>) and decodes frames one at a time
-        /// (<see cref="LazyTransition.DecodeFrame"/>), each costing a fraction of a whole transition.
+        /// keys once per transition (<see cref="LazyDecoder.Begin"/>) and decodes frames one at a time
+        /// (<see cref="LazyDecoder.DecodeFrame"/>), each costing a fraction of a whole transition.
         /// Owned by this inbetweener (disposed with it): create one per shape and reuse it for every
         /// transition of that shape, since each holds its own buffers and backend bindings until
         /// <see cref="Dispose"/>.
         /// </summary>
         /// <exception cref="InvalidOperationException">The lazy graphs were not loaded.</exception>
-        public LazyTransition CreateLazy(int pastFrames, int missingFrames)
+        public LazyDecoder CreateLazy(int pastFrames, int missingFrames)
         {
             ThrowIfDisposed();
             if (_keys == null || _frame == null)
@@ -150,7 +149,7 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             CheckLength(pastFrames, missingFrames);
-            var lazy = new LazyTransition(this, _keys, _frame, pastFrames, missingFrames);
+            var lazy = new LazyDecoder(this, _keys, _frame, pastFrames, missingFrames);
             _lazy.Add(lazy);
             return lazy;
         }
@@ -160,7 +159,7 @@ namespace DeltaInterpolator.Core.Inference
         {
             if (_disposed) return;
             _disposed = true;
-            foreach (LazyTransition l in _lazy) l.DisposeBindings();
+            foreach (LazyDecoder l in _lazy) l.DisposeBindings();
             foreach (Workspace w in _workspaces.Values) w.Binding.Dispose();
             _workspaces.Clear();
             _whole.Dispose();
@@ -179,19 +178,21 @@ namespace DeltaInterpolator.Core.Inference
 
         internal void CheckLength(int pastFrames, int missingFrames)
         {
-            if (pastFrames < 1 || missingFrames < 1) throw new ArgumentException($"P = {pastFrames}, n = {missingFrames}; expected at least one past key and one missing frame");
-            if (pastFrames + missingFrames > Contract.MaxFrameIndex)
-            {
-                throw new ArgumentException($"P + n = {pastFrames} + {missingFrames} = {pastFrames + missingFrames} exceeds the model's largest frame index {Contract.MaxFrameIndex}; use fewer past keys or split the gap");
-            }
+            // Only errors refuse a request; training-range warnings are for tools and the inspector
+            // (ModelChecks.Request), since a game may ask for longer gaps on purpose.
+            var report = new ModelCheckReport();
+            ModelChecks.Request(Contract, pastFrames, missingFrames, report);
+            ModelCheck? error = report.FirstError;
+            if (error != null) throw new ArgumentException(error.Message + "; " + error.Remedy);
         }
 
         /// <summary>
-        /// Localizes the keys and builds the inputs of the keys, common to whole and lazy runs; also
+        /// Localizes the keys and builds their features, common to whole and lazy runs (the frame indices
+        /// and gap length were written once per shape by <see cref="GraphTensors"/>); also
         /// prepares each joint's slerp between the last past key and the target (<paramref name="pairs"/>,
         /// one per joint) once, for every missing frame's baseline.
         /// </summary>
-        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, InferenceTensor keyFeatures, InferenceTensor keyFrames, InferenceTensor gap)
+        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, InferenceTensor keyFeatures)
         {
             int keys = t.KeyFrameCount;
             int reference = t.PastFrames - 1;
@@ -206,8 +207,6 @@ namespace DeltaInterpolator.Core.Inference
                     Quaternions.Normalize(QuaternionD.Read(localRotations, (target * jc + j) * 4)));
             }
 
-            FrameIndexBuilder.KeyFrames(t.PastFrames, t.MissingFrames, keyFrames.Longs);
-            FrameIndexBuilder.Gap(t.MissingFrames, gap.Longs);
             return loc;
         }
 
@@ -238,7 +237,7 @@ namespace DeltaInterpolator.Core.Inference
 
         private void DecodeFrame(Transition t, Workspace w, int row, int k)
         {
-            Decode(t, w.Localization, w.LocalRoot, w.Pairs, w.RootDelta.Floats!, w.RotationDelta.Floats!, row, k);
+            Decode(t, w.Localization, w.LocalRoot, w.Pairs, w.Tensors.RootPositionDelta!.Floats!, w.Tensors.Rotation6DDelta!.Floats!, row, k);
         }
 
         private Workspace Prepare(Transition t)
@@ -250,86 +249,44 @@ namespace DeltaInterpolator.Core.Inference
             if (!_workspaces.TryGetValue(key, out Workspace? w))
             {
                 CheckLength(t.PastFrames, t.MissingFrames);
-                w = new Workspace(this, _whole, t.PastFrames, t.MissingFrames, false);
+                w = new Workspace(this, _whole, t.PastFrames, t.MissingFrames);
                 _workspaces.Add(key, w);
             }
 
-            w.Localization = LocalizeAndBuild(t, w.LocalRoot, w.LocalRotations, w.Pairs, w.KeyFeatures, w.KeyFrames, w.Gap);
+            w.Localization = LocalizeAndBuild(t, w.LocalRoot, w.LocalRotations, w.Pairs, w.Tensors.KeyFeatures!);
             return w;
         }
 
         private void Probe()
         {
-            // One run on a neutral request of the smallest shape: reads the constant outputs (which the
-            // metadata cannot prove) and warms the engine up.
-            using (var w = new Workspace(this, _whole, 1, 1, true))
-            {
-                FrameIndexBuilder.KeyFrames(1, 1, w.KeyFrames.Longs);
-                FrameIndexBuilder.QueryFrames(1, 0, w.QueryFrames.Longs);
-                FrameIndexBuilder.Gap(1, w.Gap.Longs);
-                RunProbe(w.Binding, Contract);
-                CheckConstants(Contract, w.Constants!);
-            }
-
+            // One run per graph on a neutral request of the smallest shape: reads the constant outputs
+            // (which the metadata cannot prove) and warms the engine up.
+            GraphTensors whole = GraphTensors.Create(Contract, ModelGraphKind.Whole, 1, 1, 1, constants: true);
+            RunProbe(_whole, whole, Contract);
             if (_keys != null && _frame != null)
             {
-                var a = Contract.Architecture;
-                var features = InferenceTensor.Float(TensorNames.KeyFeatures, 1, 2, Contract.KeyFeatureSize);
-                var keyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, 2);
-                var gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
-                var query = InferenceTensor.Int64(TensorNames.QueryFrameIndices, 1);
-                var memory = InferenceTensor.Float(TensorNames.KeyMemory, a.Blocks, 2, 2, a.Width);
-                FrameIndexBuilder.KeyFrames(1, 1, keyFrames.Longs);
-                FrameIndexBuilder.Gap(1, gap.Longs);
-                query.Longs![0] = 1;
-                InferenceTensor[] keyConstants = ConstantTensors();
-                var keyOutputs = new List<InferenceTensor> { memory };
-                keyOutputs.AddRange(keyConstants);
-                using (IInferenceBinding b = _keys.Bind(new[] { features, keyFrames, gap }, keyOutputs))
-                {
-                    RunProbe(b, KeysContract!);
-                }
-
-                CheckConstants(KeysContract!, keyConstants);
-                InferenceTensor[] frameConstants = ConstantTensors();
-                var frameOutputs = new List<InferenceTensor>
-                {
-                    InferenceTensor.Float(TensorNames.RootPositionDelta, 1, 1, 3),
-                    InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, 1, Contract.JointCount, 6),
-                };
-                frameOutputs.AddRange(frameConstants);
-                using (IInferenceBinding b = _frame.Bind(new[] { memory, query, gap }, frameOutputs))
-                {
-                    RunProbe(b, FrameContract!);
-                }
-
-                CheckConstants(FrameContract!, frameConstants);
+                GraphTensors keys = GraphTensors.Create(Contract, ModelGraphKind.Keys, 1, 1, 0, constants: true);
+                RunProbe(_keys, keys, KeysContract!);
+                RunProbe(_frame, GraphTensors.ForFrame(Contract, keys, 1, constants: true), FrameContract!);
             }
         }
 
-        private static void RunProbe(IInferenceBinding binding, ModelContract contract)
+        private static void RunProbe(IInferenceBackend backend, GraphTensors tensors, ModelContract contract)
         {
-            try
+            using (IInferenceBinding binding = tensors.Bind(backend))
             {
-                binding.Run();
+                try
+                {
+                    binding.Run();
+                }
+                catch (InvalidOperationException e)
+                {
+                    throw new ModelContractException(contract.Source, "a probe run with the contract's input shapes failed (" + e.Message + ")",
+                        "expected a graph that accepts the inputs of Documentation~/model-contract.md; export the checkpoint again");
+                }
             }
-            catch (InvalidOperationException e)
-            {
-                throw new ModelContractException(contract.Source, "a probe run with the contract's input shapes failed (" + e.Message + ")",
-                    "expected a graph that accepts the inputs of Documentation~/model-contract.md; export the checkpoint again");
-            }
-        }
 
-        internal static InferenceTensor[] ConstantTensors() => new[]
-        {
-            InferenceTensor.Int64(TensorNames.ContractVersion, 1),
-            InferenceTensor.Int64(TensorNames.JointCount, 1),
-            InferenceTensor.Int64(TensorNames.KeyFeatureSize, 1),
-        };
-
-        private static void CheckConstants(ModelContract contract, InferenceTensor[] constants)
-        {
-            contract.CheckConstants(constants[0].Longs![0], constants[1].Longs![0], constants[2].Longs![0]);
+            contract.CheckConstants(tensors.ContractVersion!.Longs![0], tensors.JointCount!.Longs![0], tensors.KeyFeatureSize!.Longs![0]);
         }
 
         private void ThrowIfDisposed()
@@ -337,10 +294,10 @@ namespace DeltaInterpolator.Core.Inference
             if (_disposed) throw new ObjectDisposedException(nameof(Inbetweener));
         }
 
-        /// <summary>Buffers and binding of one request shape.</summary>
+        /// <summary>Buffers, tensors and binding of one request shape.</summary>
         private sealed class Workspace : IDisposable
         {
-            public Workspace(Inbetweener owner, IInferenceBackend backend, int pastFrames, int missingFrames, bool withConstants)
+            public Workspace(Inbetweener owner, IInferenceBackend backend, int pastFrames, int missingFrames)
             {
                 int jc = owner.Contract.JointCount;
                 int keys = pastFrames + 1;
@@ -348,33 +305,15 @@ namespace DeltaInterpolator.Core.Inference
                 LocalRotations = new double[keys * jc * 4];
                 Pairs = new SlerpPair[jc];
                 GlobalRotations = new double[missingFrames * jc * 4];
-                KeyFeatures = InferenceTensor.Float(TensorNames.KeyFeatures, 1, keys, owner.Contract.KeyFeatureSize);
-                KeyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, keys);
-                QueryFrames = InferenceTensor.Int64(TensorNames.QueryFrameIndices, missingFrames);
-                Gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
-                RootDelta = InferenceTensor.Float(TensorNames.RootPositionDelta, 1, missingFrames, 3);
-                RotationDelta = InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, missingFrames, jc, 6);
-                var outputs = new List<InferenceTensor> { RootDelta, RotationDelta };
-                if (withConstants)
-                {
-                    Constants = ConstantTensors();
-                    outputs.AddRange(Constants);
-                }
-
-                Binding = backend.Bind(new[] { KeyFeatures, KeyFrames, QueryFrames, Gap }, outputs);
+                Tensors = GraphTensors.Create(owner.Contract, ModelGraphKind.Whole, pastFrames, missingFrames, missingFrames);
+                Binding = Tensors.Bind(backend);
             }
 
             public double[] LocalRoot { get; }
             public double[] LocalRotations { get; }
             public SlerpPair[] Pairs { get; }
             public double[] GlobalRotations { get; }
-            public InferenceTensor KeyFeatures { get; }
-            public InferenceTensor KeyFrames { get; }
-            public InferenceTensor QueryFrames { get; }
-            public InferenceTensor Gap { get; }
-            public InferenceTensor RootDelta { get; }
-            public InferenceTensor RotationDelta { get; }
-            public InferenceTensor[]? Constants { get; }
+            public GraphTensors Tensors { get; }
             public IInferenceBinding Binding { get; }
             public Localization Localization { get; set; }
 

@@ -7,7 +7,7 @@ namespace DeltaInterpolator.Core.Kinematics
     /// the request localization (<c>Inference.Localizer</c>) and the benchmark's window normalisation
     /// (<see cref="WindowNormalization"/>); Python mirror <c>facing.py</c>.
     /// </summary>
-    public static class Facing
+    internal static class Facing
     {
         /// <summary>
         /// The rotation about +Y that turns the root's facing onto <paramref name="targetAxis"/>. Facing =

@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Core.Kinematics
     /// character faces a target axis at one frame. Both act on the root only: the root is the one
     /// joint whose local transform is global.
     /// </summary>
-    public static class WindowNormalization
+    internal static class WindowNormalization
     {
         /// <summary>
         /// Subtracts the mean root X and Z over all <paramref name="frameCount"/> frames from every frame;

@@ -21,7 +21,7 @@ namespace DeltaInterpolator.Core.Playback
     public sealed class InferenceWorker : TransitionDecoder
     {
         private readonly Queue<TransitionJob> _queue = new Queue<TransitionJob>(64);
-        private readonly Dictionary<long, LazyTransition> _lazy = new Dictionary<long, LazyTransition>();
+        private readonly Dictionary<long, LazyDecoder> _lazy = new Dictionary<long, LazyDecoder>();
         private readonly Thread _thread;
         private readonly bool _useLazy;
         private bool _stopping;
@@ -110,7 +110,7 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             long key = ((long)t.PastFrames << 32) | (uint)t.MissingFrames;
-            if (!_lazy.TryGetValue(key, out LazyTransition? lazy))
+            if (!_lazy.TryGetValue(key, out LazyDecoder? lazy))
             {
                 lazy = Inbetweener.CreateLazy(t.PastFrames, t.MissingFrames);
                 _lazy.Add(key, lazy);

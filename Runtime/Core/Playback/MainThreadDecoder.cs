@@ -40,7 +40,7 @@ namespace DeltaInterpolator.Core.Playback
 
         internal override void Ensure(TransitionJob job, int frames)
         {
-            LazyTransition? lazy = job.Lazy;
+            LazyDecoder? lazy = job.Lazy;
             if (lazy == null) return;
             for (int k = job.Decoded; k < frames; k++)
             {

@@ -37,7 +37,7 @@ namespace DeltaInterpolator.Core.Playback
         public Exception? Error { get; set; }
 
         /// <summary>The main-thread decoder's lazy decoder for this job's shape (its own, not shared).</summary>
-        public LazyTransition? Lazy { get; set; }
+        public LazyDecoder? Lazy { get; set; }
 
         public void Reset()
         {

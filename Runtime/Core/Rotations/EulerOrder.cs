@@ -25,7 +25,7 @@ namespace DeltaInterpolator.Core.Rotations
     }
 
     /// <summary>Axis look-ups for <see cref="EulerOrder"/>.</summary>
-    public static class EulerOrders
+    internal static class EulerOrders
     {
         /// <summary>All six orders.</summary>
         public static readonly EulerOrder[] All =

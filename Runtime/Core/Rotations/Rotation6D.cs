@@ -7,7 +7,7 @@ namespace DeltaInterpolator.Core.Rotations
     /// <b>rows</b> of the rotation matrix, [R00, R01, R02, R10, R11, R12] (pytorch3d's convention), decoded
     /// by Gram–Schmidt on rows. Python mirror: <c>rotation6d.from_matrix</c> / <c>to_matrix</c>.
     /// </summary>
-    public static class Rotation6D
+    internal static class Rotation6D
     {
         /// <summary>Number of values in one 6D rotation.</summary>
         public const int Size = 6;

@@ -8,7 +8,7 @@ namespace DeltaInterpolator.Core.Rotations
     /// <see cref="Quaternions.Slerp"/> is this struct used once; the SLERP baseline and the neural
     /// decoder build one per joint per transition and sample it for every missing frame.
     /// </summary>
-    public readonly struct SlerpPair
+    internal readonly struct SlerpPair
     {
         private readonly QuaternionD _to;
         private readonly bool _linear;

@@ -1,6 +1,6 @@
 using System.IO;
 using System.Threading.Tasks;
-using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.IO;
 using NUnit.Framework;

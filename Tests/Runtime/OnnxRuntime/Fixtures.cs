@@ -53,7 +53,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// <summary>One golden case: a request, the PyTorch pipeline's intermediate values and its result.</summary>
     public sealed class GoldenCase
     {
-        public GoldenCase(JsonValue c)
+        internal GoldenCase(JsonValue c)
         {
             Name = c.ExpectMember("name").ExpectString("name");
             PastFrames = (int)c.ExpectMember("past_frames").ExpectNumber("past_frames");
@@ -67,6 +67,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Origin = Flatten(loc.ExpectMember("origin"));
             JsonValue inputs = c.ExpectMember("inputs");
             KeyFeatures = Flatten(inputs.ExpectMember("key_features"));
+            KeyFrameIndices = Flatten(inputs.ExpectMember("key_frame_indices"));
+            QueryFrameIndices = Flatten(inputs.ExpectMember("query_frame_indices"));
+            GapLength = Flatten(inputs.ExpectMember("gap_length"));
             JsonValue outputs = c.ExpectMember("outputs");
             RootPositionDelta = Flatten(outputs.ExpectMember("root_position_delta"));
             Rotation6DDelta = Flatten(outputs.ExpectMember("rotation_6d_delta"));
@@ -86,6 +89,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public double[] Yaw { get; }
         public double[] Origin { get; }
         public double[] KeyFeatures { get; }
+        public double[] KeyFrameIndices { get; }
+        public double[] QueryFrameIndices { get; }
+        public double[] GapLength { get; }
         public double[] RootPositionDelta { get; }
         public double[] Rotation6DDelta { get; }
         public double[] RootPositions { get; }

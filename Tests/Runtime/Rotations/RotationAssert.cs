@@ -19,7 +19,7 @@ namespace DeltaInterpolator.Tests.Rotations
             Assert.That(Distance(actual, expected), Is.LessThan(tolerance), $"{message} expected ±{expected}, got {actual}");
         }
 
-        public static void SameMatrix(Matrix3x3D actual, Matrix3x3D expected, double tolerance)
+        internal static void SameMatrix(Matrix3x3D actual, Matrix3x3D expected, double tolerance)
         {
             for (int r = 0; r < 3; r++)
             {

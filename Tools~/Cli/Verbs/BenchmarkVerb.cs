@@ -7,12 +7,12 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using System.Text.Json;
-using DeltaInterpolator.Core.Benchmark;
+using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
-using DeltaInterpolator.Core.Metrics;
+using DeltaInterpolator.Evaluation.Metrics;
 using DeltaInterpolator.OnnxRuntime;
 using Spectre.Console;
 

@@ -131,7 +131,7 @@ namespace DeltaInterpolator.Cli.Verbs
             if (model.SupportsLazyDecoding)
             {
                 Transition t = SyntheticRequest(contract, 30);
-                LazyTransition lazy = model.CreateLazy(PastFrames, 30);
+                LazyDecoder lazy = model.CreateLazy(PastFrames, 30);
                 results["lazy_keys_ms"] = Measure(() => lazy.Begin(t), repeats, 1e3).ToJson();
                 int k = 0;
                 Timing frame = Measure(() => lazy.DecodeFrame(k = (k + 1) % 30), repeats, 1e3);
@@ -232,22 +232,11 @@ namespace DeltaInterpolator.Cli.Verbs
         private static Timing MeasureNetwork(string path, OnnxRuntimeOptions options, ModelContract contract, int n, int repeats)
         {
             using OnnxRuntimeBackend backend = OnnxRuntimeBackend.Load(path, options);
-            int keys = PastFrames + 1;
-            var features = InferenceTensor.Float(TensorNames.KeyFeatures, 1, keys, contract.KeyFeatureSize);
-            var keyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, keys);
-            var query = InferenceTensor.Int64(TensorNames.QueryFrameIndices, n);
-            var gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
-            FrameIndexBuilder.KeyFrames(PastFrames, n, keyFrames.Longs);
-            FrameIndexBuilder.QueryFrames(PastFrames, 0, query.Longs);
-            FrameIndexBuilder.Gap(n, gap.Longs);
+            GraphTensors tensors = GraphTensors.Create(contract, ModelGraphKind.Whole, PastFrames, n, n);
+            float[] features = tensors.KeyFeatures!.Floats!;
             var random = new Random(1);
-            for (int i = 0; i < features.Floats!.Length; i++) features.Floats[i] = (float)(0.2 * (random.NextDouble() - 0.5));
-            var outputs = new[]
-            {
-                InferenceTensor.Float(TensorNames.RootPositionDelta, 1, n, 3),
-                InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, n, contract.JointCount, 6),
-            };
-            using IInferenceBinding binding = backend.Bind(new[] { features, keyFrames, query, gap }, outputs);
+            for (int i = 0; i < features.Length; i++) features[i] = (float)(0.2 * (random.NextDouble() - 0.5));
+            using IInferenceBinding binding = tensors.Bind(backend);
             return Measure(binding.Run, repeats, 1e3);
         }
 

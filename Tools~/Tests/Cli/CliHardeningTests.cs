@@ -51,9 +51,9 @@ namespace DeltaInterpolator.Tests.Cli
             string json = temp.Write("out.json", "{\"old\": true}\n");
             byte[] before = File.ReadAllBytes(json);
             Core.Bvh.BvhAnimation clip = Core.Bvh.BvhReader.Parse(CliHarness.WalkClip(130), "walk_subject5.bvh");
-            var options = new Core.Benchmark.BenchmarkOptions { Lengths = new[] { 5, 15 } };
-            Core.Benchmark.BenchmarkStatistics stats = Core.Benchmark.BenchmarkStatistics.ComputeFromTraining(new[] { clip }, options, 50, 20, "test");
-            Core.Benchmark.BenchmarkReport report = Core.Benchmark.LafanBenchmark.Run(
+            var options = new Evaluation.Benchmark.BenchmarkOptions { Lengths = new[] { 5, 15 } };
+            Evaluation.Benchmark.BenchmarkStatistics stats = Evaluation.Benchmark.BenchmarkStatistics.ComputeFromTraining(new[] { clip }, options, 50, 20, "test");
+            Evaluation.Benchmark.BenchmarkReport report = Evaluation.Benchmark.LafanBenchmark.Run(
                 new[] { clip }, stats, new Core.Inbetweening.IInbetweener[] { new Core.Inbetweening.ZeroVelocityBaseline(), new Core.Inbetweening.SlerpBaseline() }, options);
 
             var e = Assert.Throws<IOException>(() => Core.IO.OutputFile.Write(json, s => DeltaInterpolator.Cli.Verbs.BenchmarkVerb.WriteJson(new StreamThatFills(s, 100), report, "stats")))!;
