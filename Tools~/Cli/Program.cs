@@ -17,6 +17,7 @@ namespace DeltaInterpolator.Cli
         {
             new BenchmarkVerb(),
             new InfoVerb(),
+            new RetargetVerb(),
             new SpeedVerb(),
         };
 

@@ -117,6 +117,12 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>Training range of gap lengths [min, max]; longer gaps run but were never seen.</summary>
         public (int Min, int Max) TrainingMissingFrames { get; private set; }
 
+        /// <summary>
+        /// Frame rate of the training data (metadata <c>training.fps</c>; 30, LaFAN1's, when a model does not
+        /// say): motion is resampled to it before inference.
+        /// </summary>
+        public double FramesPerSecond { get; private set; } = 30.0;
+
         /// <summary>Network size.</summary>
         public ModelArchitecture Architecture { get; private set; } = null!;
 
@@ -384,6 +390,14 @@ namespace DeltaInterpolator.Core.Inference
                 IReadOnlyDictionary<string, JsonValue> t = training.ExpectObject("training");
                 TrainingPastFrames = Range(t, "past_frames");
                 TrainingMissingFrames = Range(t, "missing_frames");
+                if (t.TryGetValue("fps", out JsonValue? fps))
+                {
+                    FramesPerSecond = fps.ExpectNumber("training.fps");
+                    if (!(FramesPerSecond > 0) || double.IsInfinity(FramesPerSecond))
+                    {
+                        throw new ModelContractException(Source, $"metadata training.fps is {Fmt(FramesPerSecond)}", "expected the positive frame rate of the training data (LaFAN1: 30)");
+                    }
+                }
             }
 
             IReadOnlyDictionary<string, JsonValue> a = Member(m, "architecture").ExpectObject("architecture");
