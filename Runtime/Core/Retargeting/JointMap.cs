@@ -118,7 +118,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 for (int j = 0; j < target.JointCount; j++)
                 {
                     IReadOnlyList<string>? chain = map.SourceChain(target.Names[j]);
-                    if (chain != null && FindAll(source, chain) != null) count++;
+                    if (chain != null && FindChain(source, chain) != null) count++;
                 }
 
                 if (count > bestCount)
@@ -211,7 +211,8 @@ namespace DeltaInterpolator.Core.Retargeting
             return found;
         }
 
-        internal static int[]? FindAll(Skeleton skeleton, IReadOnlyList<string> chain)
+        /// <summary>The indices of a chain's joints in <paramref name="skeleton"/> (<see cref="FindJoint"/>), or null when any is missing.</summary>
+        public static int[]? FindChain(Skeleton skeleton, IReadOnlyList<string> chain)
         {
             var indices = new int[chain.Count];
             for (int i = 0; i < indices.Length; i++)

@@ -21,8 +21,8 @@ namespace DeltaInterpolator.Core.Retargeting
     /// zero rotations). The target declares a reference pose (for the model
     /// <see cref="ReferencePose.ModelTPose"/>), the source gives one (its zero pose or a frame, e.g.
     /// CMU's T-pose at frame 0). The target's reference is first aligned to the source's: the root turns
-    /// about +Y by the yaw that best matches the horizontal directions from the root to every mapped
-    /// joint (so both face the same way); then, parents first, each target joint with exactly one child
+    /// about +Y by the yaw that best matches the horizontal directions from the root to its children
+    /// (to every mapped joint when those give none), so both face the same way; then, parents first, each target joint with exactly one child
     /// swings by the shortest arc that makes its bone point like the source's bone from s(j) to the first
     /// joint of the child's chain. A joint whose bone cannot be compared — several children (hips, chest),
     /// no child (hands, head, toes), or a zero-length bone on either side (CMU's LowerBack, Neck, hip and
@@ -185,7 +185,7 @@ namespace DeltaInterpolator.Core.Retargeting
             for (int j = 0; j < jt; j++)
             {
                 IReadOnlyList<string>? chain = map.SourceChain(ts.Names[j]);
-                int[]? found = chain == null ? null : JointMap.FindAll(ss, chain);
+                int[]? found = chain == null ? null : JointMap.FindChain(ss, chain);
                 if (found == null)
                 {
                     missing.Add(chain == null ? ts.Names[j] : ts.Names[j] + " (" + string.Join("+", chain) + ")");
@@ -428,23 +428,35 @@ namespace DeltaInterpolator.Core.Retargeting
 
         private static QuaternionD RootYaw(ReferencePose source, ReferencePose target, int[] sourceOf, int[] sourceFirst)
         {
-            // Least-squares yaw between the horizontal parts of the unit directions from the root to every
-            // target joint and from s(root) to its source counterpart: θ = atan2(Σ (a × b)·Y, Σ a·b).
-            double cross = 0, dot = 0;
-            Vector3D t0 = target.GlobalPosition(0), s0 = source.GlobalPosition(sourceOf[0]);
-            for (int k = 1; k < target.Skeleton.JointCount; k++)
+            // Least-squares yaw between the horizontal parts of unit directions from the root to joints of
+            // the target and from s(root) to their source counterparts: θ = atan2(Σ (a × b)·Y, Σ a·b).
+            // The root's own children come first: they move rigidly with the root, so a reference pose whose
+            // limbs differ from the target's (arms lowered, legs spread) does not bias the yaw. Only when
+            // they give no horizontal direction (e.g. all of zero length) every joint is used.
+            Skeleton ts = target.Skeleton;
+            for (int pass = 0; pass < 2; pass++)
             {
-                Vector3D a = target.GlobalPosition(k) - t0, b = source.GlobalPosition(sourceFirst[k]) - s0;
-                double la = a.Length, lb = b.Length;
-                if (la < 1e-12 || lb < 1e-12) continue;
-                a = (1.0 / la) * a;
-                b = (1.0 / lb) * b;
-                cross += a.Z * b.X - a.X * b.Z;
-                dot += a.X * b.X + a.Z * b.Z;
+                double cross = 0, dot = 0, weight = 0;
+                Vector3D t0 = target.GlobalPosition(0), s0 = source.GlobalPosition(sourceOf[0]);
+                for (int k = 1; k < ts.JointCount; k++)
+                {
+                    if (pass == 0 && ts.Parents[k] != 0) continue;
+                    Vector3D a = target.GlobalPosition(k) - t0, b = source.GlobalPosition(sourceFirst[k]) - s0;
+                    double la = a.Length, lb = b.Length;
+                    if (la < 1e-12 || lb < 1e-12) continue;
+                    a = (1.0 / la) * a;
+                    b = (1.0 / lb) * b;
+                    cross += a.Z * b.X - a.X * b.Z;
+                    dot += a.X * b.X + a.Z * b.Z;
+                    weight += Math.Sqrt((a.X * a.X + a.Z * a.Z) * (b.X * b.X + b.Z * b.Z));
+                }
+
+                if (weight < 0.5 && pass == 0) continue;
+                double half = 0.5 * Math.Atan2(cross, dot);
+                return new QuaternionD(Math.Cos(half), 0.0, Math.Sin(half), 0.0);
             }
 
-            double half = 0.5 * Math.Atan2(cross, dot);
-            return new QuaternionD(Math.Cos(half), 0.0, Math.Sin(half), 0.0);
+            return QuaternionD.Identity;
         }
 
         private static double LongestBone(ReferencePose pose)
