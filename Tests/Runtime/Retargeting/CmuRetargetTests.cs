@@ -55,6 +55,22 @@ namespace DeltaInterpolator.Tests.Retargeting
         }
 
         [Test]
+        public void FeetStayOnTheGroundInTheDemoClip()
+        {
+            // The shipped demo clip (Samples~/Demo, no T-pose frame): its zero pose is the reference.
+            string path = Path.Combine(TestEnvironment.RepositoryRoot!, "Samples~", "Demo", "cmu_01_01_jumps_turn.bvh");
+            if (!File.Exists(path)) Assert.Ignore($"{path} absent (Samples~ not in this copy); skipping.");
+            BvhAnimation cmu = BvhReader.Read(path);
+            Skeleton model = RetargetFixtures.Lafan1();
+            SkeletonMap map = SkeletonMap.Create(ReferencePose.Zero(cmu.Skeleton), ReferencePose.ModelTPose(model), null, path);
+            MotionClip onModel = MotionResampler.Resample(map.ToTarget(cmu.Motion), 1.0 / 30.0);
+            double before = MedianLowestFoot(cmu.Motion, 0, "LeftFoot", "RightFoot", "LeftToeBase", "RightToeBase") / LegLength(cmu.Skeleton, "LeftLeg", "LeftFoot");
+            double after = MedianLowestFoot(onModel, 0, "LeftFoot", "RightFoot", "LeftToe", "RightToe") / LegLength(model, "LeftLeg", "LeftFoot");
+            TestContext.WriteLine($"demo clip: median lowest foot height ÷ leg length (thigh + shin) before {before:F4}, after {after:F4}, moved {Math.Abs(after - before):F4}; root scale {map.RootScale:F4}");
+            Assert.That(Math.Abs(after - before), Is.LessThanOrEqualTo(0.03));
+        }
+
+        [Test]
         public void CmuBonesPointLikeTheModelsOnEveryFrame()
         {
             string path = Path.Combine(RetargetFixtures.RequireCmu(), "02_04.bvh");

@@ -91,7 +91,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "scaling the root by leg length and resampling to the model's frame rate.\n" +
                 "Joints are matched by name (built-in LaFAN1, CMU, Mixamo and Unity HumanBodyBones tables, or --map);\n" +
                 "a skeleton missing joints the model needs is refused with their names (exit status 2).\n" +
-                "Example:\n  inbetween retarget Samples~/Demo/cmu_02_04_jump.bvh --reference-frame 0 --to model --out out/jump_on_model.bvh");
+                "Example:\n  inbetween retarget Samples~/Demo/cmu_01_01_jumps_turn.bvh --to model --out out/jumps_on_model.bvh");
             command.Arguments.Add(_input);
             command.Options.Add(_to);
             command.Options.Add(_out);
@@ -245,7 +245,7 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Input", Markup.Escape($"{input}: {source.Skeleton.JointCount} joints, {inClip.FrameCount} frames at {Fps(inClip.FrameTime)} fps"));
             table.AddRow("Reference pose", referenceFrame.HasValue ? $"frame {referenceFrame.Value}" : "zero pose (all rotations 0)");
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
-            table.AddRow("Unmapped (kept as in the input)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
+            table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
             table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "× {0:0.#####} (model leg {1:0.##} ÷ input leg {2:0.###}, root height above the lowest joint in each reference pose)",
                 toModel.RootScale, toModel.TargetLegLength, toModel.SourceLegLength)));

@@ -98,6 +98,19 @@ namespace DeltaInterpolator.Tests.Cli
         }
 
         [Test]
+        public void TheDemoClipRetargetsAndItsResultReadsWithInfo()
+        {
+            string demo = Path.Combine(TestEnvironment.RepositoryRoot!, "Samples~", "Demo", "cmu_01_01_jumps_turn.bvh");
+            string output = Path.Combine(_dir, "demo_on_model.bvh");
+            (int code, string error) = Run("retarget", demo, "--to", "model", "--out", output, "--model", _model);
+            Assert.That(code, Is.EqualTo(0), error);
+            (code, error) = Run("info", output);
+            Assert.That(code, Is.EqualTo(0), error);
+            BvhAnimation result = BvhReader.Read(output);
+            Assert.That(result.Motion.FrameCount, Is.EqualTo(225));   // 901 frames at 120 fps span 7.5 s → 226 frames at 30 fps would end past it; 225 fit
+        }
+
+        [Test]
         public void RetargetsOntoAnotherBvhSkeleton()
         {
             string input = WriteSource("walk.bvh");
