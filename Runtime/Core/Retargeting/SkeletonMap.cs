@@ -22,9 +22,9 @@ namespace DeltaInterpolator.Core.Retargeting
     /// <see cref="ReferencePose.ModelTPose"/>), the source gives one (its zero pose or a frame, e.g.
     /// CMU's T-pose at frame 0). The target's reference is first aligned to the source's: the root turns
     /// about +Y by the yaw that best matches the horizontal directions from the root to its children
-    /// (to every mapped joint when those give none), so both face the same way; then, parents first, each target joint with exactly one child
-    /// swings by the shortest arc that makes its bone point like the source's bone from s(j) to the first
-    /// joint of the child's chain. A joint whose bone cannot be compared — several children (hips, chest),
+    /// (to every mapped joint when those give none), so both face the same way; then, parents first,
+    /// each target joint with exactly one child swings by the shortest arc that makes its bone point
+    /// like the source's bone from s(j) to the first joint of the child's chain. A joint whose bone cannot be compared — several children (hips, chest),
     /// no child (hands, head, toes), or a zero-length bone on either side (CMU's LowerBack, Neck, hip and
     /// shoulder joints sit on their parents) — turns with its parent's alignment. The aligned pose keeps
     /// the declared twists, so the target's local rotations stay in the range it is used to.</para>
@@ -37,7 +37,8 @@ namespace DeltaInterpolator.Core.Retargeting
     /// <see cref="RootScale"/>: the ratio of the two skeletons' leg lengths, each measured as the root's
     /// height above its lowest mapped joint in the reference pose. It includes the unit change (CMU's
     /// 0.056444 m units to LaFAN1's centimetres) and the difference in size, so feet stay on the ground
-    /// (Y = 0 in both) and strides keep their proportion to the legs.</para>
+    /// (Y = 0 in both) and strides keep their proportion to the legs. A caller that knows better (e.g.
+    /// both files' units and no size change wanted) passes its own scale to <see cref="Create"/>.</para>
     /// <para><b>Frame rate.</b> Both directions keep the frame rate; use <see cref="MotionResampler"/>
     /// to reach the model's rate and back.</para>
     /// </remarks>
@@ -47,9 +48,10 @@ namespace DeltaInterpolator.Core.Retargeting
         private readonly int[] _sourceFirst;     // target joint → the first joint of its source chain
         private readonly int[][] _carried;       // target joint → source joints above s(j) on its path, top first
         private readonly QuaternionD[] _correction;
-        private readonly bool[] _sourceMapped;   // source joint → is s(j) of some target joint
+        private readonly double[] _scratchPositions;
+        private readonly double[] _scratchRotations;
 
-        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried)
+        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, double? rootScale)
         {
             SourceReference = source;
             Map = map;
@@ -101,16 +103,16 @@ namespace DeltaInterpolator.Core.Retargeting
             // 2. Root scale from the leg lengths of the two reference poses.
             SourceLegLength = LegLength(source, sourceFirst, sourceOf[0]);
             TargetLegLength = LegLength(TargetReference, Identity(jt), 0);
-            if (!(SourceLegLength > 0) || !(TargetLegLength > 0))
+            if (rootScale == null && (!(SourceLegLength > 0) || !(TargetLegLength > 0)))
             {
                 throw new JointMapException(map.Name, $"the reference poses give leg lengths {SourceLegLength:G4} (source) and {TargetLegLength:G4} (target)",
                     "expected reference poses standing upright (Y up) with joints below the root; name a standing frame as the reference");
             }
 
-            RootScale = TargetLegLength / SourceLegLength;
+            RootScale = rootScale ?? TargetLegLength / SourceLegLength;
 
-            _sourceMapped = new bool[ss.JointCount];
-            foreach (int s in sourceOf) _sourceMapped[s] = true;
+            _scratchPositions = new double[3 * ss.JointCount];
+            _scratchRotations = new double[4 * ss.JointCount];
             var unmapped = new List<string>();
             var inChains = new bool[ss.JointCount];
             for (int j = 0; j < jt; j++)
@@ -171,9 +173,15 @@ namespace DeltaInterpolator.Core.Retargeting
         /// <param name="target">The target skeleton's declared reference pose (<see cref="ReferencePose.ModelTPose"/> for the model).</param>
         /// <param name="map">The correspondence; null picks the best built-in one (<see cref="JointMap.Detect"/>).</param>
         /// <param name="sourceName">The source's file or name, for messages.</param>
+        /// <param name="rootScale">Target units per source unit for the root's position; null (the default) for the ratio of leg lengths.</param>
         /// <exception cref="JointMapException">Target joints are missing from the source (all named), or a chain does not fit the source's hierarchy.</exception>
-        public static SkeletonMap Create(ReferencePose source, ReferencePose target, JointMap? map, string sourceName)
+        public static SkeletonMap Create(ReferencePose source, ReferencePose target, JointMap? map, string sourceName, double? rootScale = null)
         {
+            if (rootScale.HasValue && (!(rootScale.Value > 0) || double.IsInfinity(rootScale.Value)))
+            {
+                throw new ArgumentOutOfRangeException(nameof(rootScale), "the root scale must be a positive number");
+            }
+
             if (source == null) throw new ArgumentNullException(nameof(source));
             if (target == null) throw new ArgumentNullException(nameof(target));
             sourceName ??= "<source>";
@@ -252,7 +260,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 carried[j] = path.ToArray();
             }
 
-            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried);
+            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, rootScale);
         }
 
         /// <summary>
@@ -265,45 +273,59 @@ namespace DeltaInterpolator.Core.Retargeting
             if (source == null) throw new ArgumentNullException(nameof(source));
             RequireSkeleton(source.Skeleton, Source, "source");
             int js = Source.JointCount, jt = Target.JointCount, n = source.FrameCount;
-            var gPos = new double[3 * js];
-            var gRot = new double[4 * js];
             var positions = new double[n * jt * 3];
             var rotations = new double[n * jt * 4];
             ReadOnlySpan<double> targetOffsets = Target.OffsetSpan;
             for (int f = 0; f < n; f++)
             {
-                ReadOnlySpan<double> lp = source.LocalPositions.AsSpan(source.PositionIndex(f, 0), 3 * js);
-                ForwardKinematics.ComputeFrame(Source.ParentSpan, lp, Vector3D.Read(lp, 0), source.LocalRotations.AsSpan(source.RotationIndex(f, 0), 4 * js), gPos, gRot);
-                int tr = f * jt * 4, tp = f * jt * 3;
-                for (int j = 0; j < jt; j++)
-                {
-                    QuaternionD g = QuaternionD.Read(gRot, 4 * _sourceOf[j]);
-                    QuaternionD q;
-                    if (j == 0)
-                    {
-                        q = Quaternions.Multiply(g, _correction[0]);
-                    }
-                    else
-                    {
-                        int p = Target.Parents[j];
-                        QuaternionD relative = Quaternions.Multiply(Quaternions.Conjugate(QuaternionD.Read(gRot, 4 * _sourceOf[p])), g);
-                        q = Quaternions.Multiply(Quaternions.Conjugate(_correction[p]), Quaternions.Multiply(relative, _correction[j]));
-                    }
-
-                    Quaternions.Normalize(q).Write(rotations, tr + 4 * j);
-                    if (j == 0)
-                    {
-                        (RootScale * Vector3D.Read(gPos, 3 * _sourceOf[0])).Write(positions, tp);
-                    }
-                    else
-                    {
-                        targetOffsets.Slice(3 * j, 3).CopyTo(positions.AsSpan(tp + 3 * j, 3));
-                    }
-                }
+                Span<double> tp = positions.AsSpan(f * jt * 3, jt * 3);
+                targetOffsets.CopyTo(tp);
+                ToTargetFrame(source.LocalPositions.AsSpan(source.PositionIndex(f, 0), 3 * js), source.LocalRotations.AsSpan(source.RotationIndex(f, 0), 4 * js),
+                    tp.Slice(0, 3), rotations.AsSpan(f * jt * 4, jt * 4));
             }
 
             Quaternions.FixContinuity(rotations, n, jt);
             return new MotionClip(Target, n, source.FrameTime, positions, rotations);
+        }
+
+        /// <summary>
+        /// One pose from the source skeleton onto the target's (allocation-free; uses scratch memory of this
+        /// map, so one thread at a time per map).
+        /// </summary>
+        /// <param name="sourceLocalPositions">Source joints × 3 local translations (the root's is its position).</param>
+        /// <param name="sourceLocalRotations">Source joints × 4 local rotations (w, x, y, z).</param>
+        /// <param name="targetRootPosition">Output: the target root's position (3 values).</param>
+        /// <param name="targetLocalRotations">Output: target joints × 4 local rotations.</param>
+        public void ToTargetFrame(ReadOnlySpan<double> sourceLocalPositions, ReadOnlySpan<double> sourceLocalRotations, Span<double> targetRootPosition, Span<double> targetLocalRotations)
+        {
+            int js = Source.JointCount, jt = Target.JointCount;
+            if (sourceLocalPositions.Length < 3 * js || sourceLocalRotations.Length < 4 * js || targetRootPosition.Length < 3 || targetLocalRotations.Length < 4 * jt)
+            {
+                throw new ArgumentException("a span is too short; expected source joints × 3 and × 4, 3, and target joints × 4 values");
+            }
+
+            double[] gPos = _scratchPositions, gRot = _scratchRotations;
+            ForwardKinematics.ComputeFrame(Source.ParentSpan, sourceLocalPositions, Vector3D.Read(sourceLocalPositions, 0), sourceLocalRotations, gPos, gRot);
+            ReadOnlySpan<int> parents = Target.ParentSpan;
+            for (int j = 0; j < jt; j++)
+            {
+                QuaternionD g = QuaternionD.Read(gRot, 4 * _sourceOf[j]);
+                QuaternionD q;
+                if (j == 0)
+                {
+                    q = Quaternions.Multiply(g, _correction[0]);
+                }
+                else
+                {
+                    int p = parents[j];
+                    QuaternionD relative = Quaternions.Multiply(Quaternions.Conjugate(QuaternionD.Read(gRot, 4 * _sourceOf[p])), g);
+                    q = Quaternions.Multiply(Quaternions.Conjugate(_correction[p]), Quaternions.Multiply(relative, _correction[j]));
+                }
+
+                Quaternions.Normalize(q).Write(targetLocalRotations, 4 * j);
+            }
+
+            (RootScale * Vector3D.Read(gPos, 3 * _sourceOf[0])).Write(targetRootPosition, 0);
         }
 
         /// <summary>
@@ -343,43 +365,63 @@ namespace DeltaInterpolator.Core.Retargeting
                     SampleKeys(source, keys, sourceFrame, lp, lr);
                 }
 
-                int tr = target.RotationIndex(f, 0);
-                for (int j = 0; j < jt; j++)
-                {
-                    QuaternionD qt = QuaternionD.Read(target.LocalRotations, tr + 4 * j);
-                    // The source-side rotation from s(parent) to s(j) (for the root: its global rotation).
-                    QuaternionD wanted = j == 0
-                        ? Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[0]))
-                        : Quaternions.Multiply(_correction[Target.Parents[j]], Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[j])));
-                    QuaternionD above = QuaternionD.Identity;
-                    foreach (int s in _carried[j]) above = Quaternions.Multiply(above, QuaternionD.Read(lr, 4 * s));
-                    Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(above), wanted)).Write(lr, 4 * _sourceOf[j]);
-                }
-
-                // The root: place the source root so that s(root) lands at the target root ÷ scale.
-                Vector3D hips = (1.0 / RootScale) * Vector3D.Read(target.LocalPositions, target.PositionIndex(f, 0));
-                if (_carried[0].Length == 0)
-                {
-                    hips.Write(lp, 0);
-                }
-                else
-                {
-                    Vector3D offset = Vector3D.Zero;
-                    QuaternionD g = QuaternionD.Read(lr, 0);
-                    int[] path = _carried[0];
-                    for (int i = 1; i <= path.Length; i++)
-                    {
-                        int s = i < path.Length ? path[i] : _sourceOf[0];
-                        offset = offset + Quaternions.Apply(g, Vector3D.Read(lp, 3 * s));
-                        if (i < path.Length) g = Quaternions.Multiply(g, QuaternionD.Read(lr, 4 * s));
-                    }
-
-                    (hips - offset).Write(lp, 0);
-                }
+                ToSourceFrame(Vector3D.Read(target.LocalPositions, target.PositionIndex(f, 0)), target.LocalRotations.AsSpan(target.RotationIndex(f, 0), jt * 4), lp, lr);
             }
 
             Quaternions.FixContinuity(rotations, n, js);
             return new MotionClip(Source, n, target.FrameTime, positions, rotations);
+        }
+
+        /// <summary>
+        /// One target pose back onto the source skeleton, in place (allocation-free): on input the source
+        /// spans hold a source pose that supplies every unmapped value (e.g. the character's current pose);
+        /// on output the mapped joints' rotations and the root's position are replaced.
+        /// </summary>
+        /// <param name="targetRootPosition">The target root's position.</param>
+        /// <param name="targetLocalRotations">Target joints × 4 local rotations.</param>
+        /// <param name="sourceLocalPositions">In/out: source joints × 3 local translations (only the root's is written).</param>
+        /// <param name="sourceLocalRotations">In/out: source joints × 4 local rotations.</param>
+        public void ToSourceFrame(Vector3D targetRootPosition, ReadOnlySpan<double> targetLocalRotations, Span<double> sourceLocalPositions, Span<double> sourceLocalRotations)
+        {
+            int js = Source.JointCount, jt = Target.JointCount;
+            if (targetLocalRotations.Length < 4 * jt || sourceLocalPositions.Length < 3 * js || sourceLocalRotations.Length < 4 * js)
+            {
+                throw new ArgumentException("a span is too short; expected target joints × 4, and source joints × 3 and × 4 values");
+            }
+
+            ReadOnlySpan<int> parents = Target.ParentSpan;
+            for (int j = 0; j < jt; j++)
+            {
+                QuaternionD qt = QuaternionD.Read(targetLocalRotations, 4 * j);
+                // The source-side rotation from s(parent) to s(j) (for the root: its global rotation).
+                QuaternionD wanted = j == 0
+                    ? Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[0]))
+                    : Quaternions.Multiply(_correction[parents[j]], Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[j])));
+                QuaternionD above = QuaternionD.Identity;
+                int[] carried = _carried[j];
+                for (int i = 0; i < carried.Length; i++) above = Quaternions.Multiply(above, QuaternionD.Read(sourceLocalRotations, 4 * carried[i]));
+                Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(above), wanted)).Write(sourceLocalRotations, 4 * _sourceOf[j]);
+            }
+
+            // The root: place the source root so that s(root) lands at the target root ÷ scale.
+            Vector3D hips = (1.0 / RootScale) * targetRootPosition;
+            int[] path = _carried[0];
+            if (path.Length == 0)
+            {
+                hips.Write(sourceLocalPositions, 0);
+                return;
+            }
+
+            Vector3D offset = Vector3D.Zero;
+            QuaternionD g = QuaternionD.Read(sourceLocalRotations, 0);
+            for (int i = 1; i <= path.Length; i++)
+            {
+                int s = i < path.Length ? path[i] : _sourceOf[0];
+                offset = offset + Quaternions.Apply(g, Vector3D.Read(sourceLocalPositions, 3 * s));
+                if (i < path.Length) g = Quaternions.Multiply(g, QuaternionD.Read(sourceLocalRotations, 4 * s));
+            }
+
+            (hips - offset).Write(sourceLocalPositions, 0);
         }
 
         private static void SampleKeys(MotionClip source, int[] keys, double frame, Span<double> positions, Span<double> rotations)

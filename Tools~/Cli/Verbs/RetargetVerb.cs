@@ -71,6 +71,12 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "F",
         };
 
+        private readonly Option<double?> _scale = new Option<double?>("--scale")
+        {
+            Description = "Model units per input unit for the root's position; default: the ratio of leg lengths (root height above the lowest joint in each reference pose), which also converts units",
+            HelpName = "S",
+        };
+
         private readonly Option<string?> _model = new Option<string?>("--model")
         {
             Description = "The model whose skeleton and frame rate are used (default " + DefaultModel + ")",
@@ -99,6 +105,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_referenceFrame);
             command.Options.Add(_targetReferenceFrame);
             command.Options.Add(_fps);
+            command.Options.Add(_scale);
             command.Options.Add(_model);
             command.Options.Add(_force);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
@@ -120,6 +127,12 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"inbetween retarget: --fps {fps.Value.ToString(CultureInfo.InvariantCulture)}; expected a frame rate above 0");
             }
 
+            double? scale = parse.GetValue(_scale);
+            if (scale.HasValue && !(scale.Value > 0 && !double.IsInfinity(scale.Value)))
+            {
+                throw new CliErrors.UsageException($"inbetween retarget: --scale {scale.Value.ToString(CultureInfo.InvariantCulture)}; expected a positive number of model units per input unit");
+            }
+
             RequireFile(input, "the BVH file to retarget");
             if (!toModel) RequireFile(to, "'model' or a BVH file whose skeleton receives the motion");
             if (mapPath != null) RequireFile(mapPath, "a JSON joint map");
@@ -131,7 +144,7 @@ namespace DeltaInterpolator.Cli.Verbs
             ReferencePose sourceReference = Reference(source, parse.GetValue(_referenceFrame), "--reference-frame", input);
             ReferencePose modelReference = ReferencePose.ModelTPose(contract.Skeleton);
             JointMap? userMap = mapPath == null ? null : JointMap.Load(mapPath, JointMap.Detect(source.Skeleton, contract.Skeleton));
-            SkeletonMap toModelMap = Map(sourceReference, modelReference, userMap, input);
+            SkeletonMap toModelMap = Map(sourceReference, modelReference, userMap, input, scale);
 
             MotionClip onModel = toModelMap.ToTarget(source.Motion);
             BvhAnimation result;
@@ -159,7 +172,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 BvhWriter.Write(result, writer);
             });
 
-            PrintSummary(input, source, toModelMap, fromModelMap, parse.GetValue(_referenceFrame), result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
+            PrintSummary(input, source, toModelMap, fromModelMap, parse.GetValue(_referenceFrame), scale.HasValue, result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
             return 0;
         }
 
@@ -193,11 +206,11 @@ namespace DeltaInterpolator.Cli.Verbs
             return ReferencePose.FromFrame(animation.Motion, frame.Value);
         }
 
-        private static SkeletonMap Map(ReferencePose source, ReferencePose model, JointMap? userMap, string path)
+        private static SkeletonMap Map(ReferencePose source, ReferencePose model, JointMap? userMap, string path, double? scale = null)
         {
             try
             {
-                return SkeletonMap.Create(source, model, userMap, path);
+                return SkeletonMap.Create(source, model, userMap, path, scale);
             }
             catch (JointMapException e)
             {
@@ -235,7 +248,7 @@ namespace DeltaInterpolator.Cli.Verbs
             return new BvhAnimation(motion, channels, endSites, name);
         }
 
-        private static void PrintSummary(string input, BvhAnimation source, SkeletonMap toModel, SkeletonMap? fromModel, int? referenceFrame,
+        private static void PrintSummary(string input, BvhAnimation source, SkeletonMap toModel, SkeletonMap? fromModel, int? referenceFrame, bool scaleGiven,
             BvhAnimation result, string output, string target, double seconds)
         {
             var table = new Table().Border(TableBorder.Rounded).HideHeaders();
@@ -247,8 +260,8 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
             table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
             table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
-                "× {0:0.#####} (model leg {1:0.##} ÷ input leg {2:0.###}, root height above the lowest joint in each reference pose)",
-                toModel.RootScale, toModel.TargetLegLength, toModel.SourceLegLength)));
+                "× {0:0.#####} {3}(model leg {1:0.##} ÷ input leg {2:0.###}: root height above the lowest joint in each reference pose)",
+                toModel.RootScale, toModel.TargetLegLength, toModel.SourceLegLength, scaleGiven ? "as given by --scale " : "")));
             if (fromModel != null)
             {
                 table.AddRow("Target", Markup.Escape($"{target}: {fromModel.Source.JointCount} joints, map '{fromModel.Map.Name}', root × {(toModel.RootScale / fromModel.RootScale).ToString("0.#####", CultureInfo.InvariantCulture)}"));

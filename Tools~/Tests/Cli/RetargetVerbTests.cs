@@ -174,6 +174,26 @@ namespace DeltaInterpolator.Tests.Cli
         }
 
         [Test]
+        public void AGivenScaleReplacesTheLegLengthRatio()
+        {
+            string input = WriteSource("walk.bvh");
+            string output = Path.Combine(_dir, "out.bvh");
+            (int code, string error) = Run("retarget", input, "--to", "model", "--out", output, "--model", _model, "--scale", "0");
+            Assert.That(code, Is.EqualTo(2));
+            AssertOneLine(error, "--scale 0");
+            Assert.That(File.Exists(output), Is.False);
+
+            (code, error) = Run("retarget", input, "--to", "model", "--out", output, "--model", _model, "--scale", "2.5");
+            Assert.That(code, Is.EqualTo(0), error);
+            BvhAnimation source = BvhReader.Read(input), result = BvhReader.Read(output);
+            // Frame 0 of both: the root's position times 2.5 (the file keeps 6 decimals).
+            for (int c = 0; c < 3; c++)
+            {
+                Assert.That(result.Motion.LocalPositions[c], Is.EqualTo(2.5 * source.Motion.LocalPositions[c]).Within(1e-4));
+            }
+        }
+
+        [Test]
         public void AReferenceFrameOutsideTheFileIsRefused()
         {
             string input = WriteSource("walk.bvh");
