@@ -70,6 +70,22 @@ namespace DeltaInterpolator.Core.Retargeting
             return new ReferencePose(skeleton, q, Vector3D.Read(skeleton.OffsetSpan, 0));
         }
 
+        /// <summary>
+        /// The reference pose to use when the user names none: <see cref="ModelTPose"/> for a skeleton with
+        /// all of LaFAN1's joint names (its bones follow LaFAN1's local axes, so the model's T-pose by axes
+        /// fits it and LaFAN1 motion reaches the model unchanged), otherwise its zero pose.
+        /// </summary>
+        public static ReferencePose Default(Skeleton skeleton)
+        {
+            if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            foreach (string name in JointMap.Lafan1.TargetJoints)
+            {
+                if (skeleton.IndexOf(name) < 0) return Zero(skeleton);
+            }
+
+            return ModelTPose(skeleton);
+        }
+
         /// <summary>The pose of frame <paramref name="frame"/> of a clip (e.g. CMU's T-pose at frame 0).</summary>
         /// <exception cref="ArgumentOutOfRangeException">The clip has no such frame.</exception>
         public static ReferencePose FromFrame(MotionClip clip, int frame)

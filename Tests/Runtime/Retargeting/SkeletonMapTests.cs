@@ -105,6 +105,28 @@ namespace DeltaInterpolator.Tests.Retargeting
         }
 
         [Test]
+        public void LafanMotionReachesTheModelUnchangedWithTheDefaultReference()
+        {
+            Skeleton model = RetargetFixtures.Lafan1();
+            // Another LaFAN1 actor: the same joints and axes, other bone lengths.
+            var offsets = new double[model.Offsets.Count];
+            for (int i = 0; i < offsets.Length; i++) offsets[i] = 1.1 * model.Offsets[i];
+            Skeleton actor = model.WithOffsets(offsets);
+            MotionClip clip = RetargetFixtures.Motion(ReferencePose.ModelTPose(actor), 30, 1.0 / 30.0, 41, 3.0);
+            SkeletonMap map = SkeletonMap.Create(ReferencePose.Default(actor), ReferencePose.ModelTPose(model), null, "lafan.bvh");
+            Assert.That(map.Map, Is.SameAs(JointMap.Lafan1));
+            MotionClip onModel = map.ToTarget(clip);
+            double worst = 0;
+            for (int i = 0; i < clip.FrameCount * 22; i++)
+            {
+                worst = Math.Max(worst, RetargetFixtures.Angle(QuaternionD.Read(clip.LocalRotations, 4 * i), QuaternionD.Read(onModel.LocalRotations, 4 * i)));
+            }
+
+            Assert.That(worst, Is.LessThan(1e-9));
+            Assert.That(map.RootScale, Is.EqualTo(1.0 / 1.1).Within(1e-9));
+        }
+
+        [Test]
         public void MissingJointsAreRefusedWithTheirNames()
         {
             Skeleton model = RetargetFixtures.Lafan1();

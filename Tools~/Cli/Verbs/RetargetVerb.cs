@@ -55,13 +55,13 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<int?> _referenceFrame = new Option<int?>("--reference-frame")
         {
-            Description = "The input frame that is its reference pose (e.g. 0 for CMU's T-pose); default: the zero pose (all rotations 0)",
+            Description = "The input frame that is its reference pose (e.g. 0 for a CMU file's T-pose); default: the model's T-pose for LaFAN1 joint names, otherwise the zero pose (all rotations 0)",
             HelpName = "K",
         };
 
         private readonly Option<int?> _targetReferenceFrame = new Option<int?>("--target-reference-frame")
         {
-            Description = "With --to OTHER.bvh: the frame of OTHER that is its reference pose and supplies its unmapped joints; default: its zero pose",
+            Description = "With --to OTHER.bvh: the frame of OTHER that is its reference pose and supplies its unmapped joints; default as for --reference-frame",
             HelpName = "K",
         };
 
@@ -196,7 +196,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private static ReferencePose Reference(BvhAnimation animation, int? frame, string option, string path)
         {
-            if (frame == null) return ReferencePose.Zero(animation.Skeleton);
+            if (frame == null) return ReferencePose.Default(animation.Skeleton);
             int count = animation.Motion.FrameCount;
             if (frame.Value < 0 || frame.Value >= count)
             {
@@ -256,7 +256,8 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddColumn("");
             MotionClip inClip = source.Motion, outClip = result.Motion;
             table.AddRow("Input", Markup.Escape($"{input}: {source.Skeleton.JointCount} joints, {inClip.FrameCount} frames at {Fps(inClip.FrameTime)} fps"));
-            table.AddRow("Reference pose", referenceFrame.HasValue ? $"frame {referenceFrame.Value}" : "zero pose (all rotations 0)");
+            table.AddRow("Reference pose", referenceFrame.HasValue ? $"frame {referenceFrame.Value}"
+                : HasLafanNames(source.Skeleton) ? "the model's T-pose (LaFAN1 joint names and axes)" : "zero pose (all rotations 0)");
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
             table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
             table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
@@ -274,6 +275,12 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Frames", Markup.Escape($"{inClip.FrameCount} at {Fps(inClip.FrameTime)} fps → {outClip.FrameCount} at {Fps(outClip.FrameTime)} fps"));
             table.AddRow("Wrote", Markup.Escape($"{output} ({seconds.ToString("0.00", CultureInfo.InvariantCulture)} s)"));
             AnsiConsole.Write(table);
+        }
+
+        private static bool HasLafanNames(Skeleton skeleton)
+        {
+            foreach (string name in JointMap.Lafan1.TargetJoints) if (skeleton.IndexOf(name) < 0) return false;
+            return true;
         }
 
         private static string Mapped(SkeletonMap map)
