@@ -152,7 +152,8 @@ namespace DeltaInterpolator.Cli.Verbs
             if (toModel)
             {
                 double frameTime = 1.0 / (fps ?? contract.FramesPerSecond);
-                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-9 ? MotionResampler.Resample(onModel, frameTime) : onModel;
+                // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the same rate, kept as written.
+                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime) : onModel;
                 result = ModelAnimation(resampled, output);
             }
             else
