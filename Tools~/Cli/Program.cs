@@ -20,6 +20,7 @@ namespace DeltaInterpolator.Cli
             new BenchmarkVerb(),
             new CheckVerb(),
             new InfoVerb(),
+            new RetargetVerb(),
             new PreviewVerb(),
             new PackVerb(),
             new SpeedVerb(),

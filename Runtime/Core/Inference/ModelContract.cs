@@ -105,6 +105,12 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>What the model was trained on, as the exporter wrote it ("" when unknown).</summary>
         public string TrainingData { get; private set; } = "";
 
+        /// <summary>
+        /// Frame rate motion is resampled to before inference: <see cref="TrainingFps"/>, or 30 (LaFAN1's) when a
+        /// model does not say.
+        /// </summary>
+        public double FramesPerSecond => TrainingFps > 0 ? TrainingFps : 30.0;
+
         /// <summary>Network size.</summary>
         public ModelArchitecture Architecture { get; private set; } = new ModelArchitecture(0, 0, 0, 0, 0, 0);
 

@@ -1,0 +1,244 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using DeltaInterpolator.Core.Json;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Retargeting
+{
+    /// <summary>
+    /// Which source joint(s) each target joint takes its motion from: a target joint name → a chain of
+    /// source joint names, parent first. Usually the chain is one joint; a longer chain maps several
+    /// source joints onto one target joint (CMU <c>Neck</c> + <c>Neck1</c> → LaFAN1 <c>Neck</c>): the target
+    /// joint then turns as the chain's <b>last</b> joint does (the product of the chain's rotations), and
+    /// when mapping back the chain's leading joints keep the source clip's own rotations while the last
+    /// one takes the rest, so the round trip is exact (<see cref="SkeletonMap"/>).
+    /// Names match exactly, or after dropping a namespace prefix up to the last ':' on either side
+    /// (Mixamo's <c>mixamorig:Hips</c> matches <c>Hips</c>).
+    /// Built-in maps target the model's skeleton (LaFAN1's 22 joint names).
+    /// </summary>
+    public sealed class JointMap
+    {
+        private readonly Dictionary<string, string[]> _chains;
+        private readonly string[] _targets;
+
+        /// <summary>Creates a map from target joint names to source chains (parent first, each non-empty).</summary>
+        /// <param name="name">A short name for messages, e.g. <c>cmu</c> or a file path.</param>
+        /// <param name="chains">Target joint name → source joint names, parent first.</param>
+        public JointMap(string name, IEnumerable<KeyValuePair<string, string[]>> chains)
+        {
+            Name = name ?? throw new ArgumentNullException(nameof(name));
+            if (chains == null) throw new ArgumentNullException(nameof(chains));
+            _chains = new Dictionary<string, string[]>(StringComparer.Ordinal);
+            var order = new List<string>();
+            foreach (KeyValuePair<string, string[]> kv in chains)
+            {
+                if (string.IsNullOrWhiteSpace(kv.Key)) throw new ArgumentException("a target joint name is empty", nameof(chains));
+                if (kv.Value == null || kv.Value.Length == 0) throw new ArgumentException($"target joint '{kv.Key}' has no source joint", nameof(chains));
+                if (_chains.ContainsKey(kv.Key)) throw new ArgumentException($"target joint '{kv.Key}' is listed twice", nameof(chains));
+                _chains.Add(kv.Key, (string[])kv.Value.Clone());
+                order.Add(kv.Key);
+            }
+
+            _targets = order.ToArray();
+        }
+
+        /// <summary>The map's name for messages.</summary>
+        public string Name { get; }
+
+        /// <summary>The target joints the map names, in the order given.</summary>
+        public IReadOnlyList<string> TargetJoints => _targets;
+
+        /// <summary>The source chain (parent first) of <paramref name="targetJoint"/>, or null when the map does not name it.</summary>
+        public IReadOnlyList<string>? SourceChain(string targetJoint) => _chains.TryGetValue(targetJoint, out string[]? chain) ? chain : null;
+
+        /// <summary>LaFAN1 (and the model) onto itself: every joint by its own name.</summary>
+        public static JointMap Lafan1 { get; } = Build("lafan1", new[]
+        {
+            "Hips", "Hips", "LeftUpLeg", "LeftUpLeg", "LeftLeg", "LeftLeg", "LeftFoot", "LeftFoot", "LeftToe", "LeftToe",
+            "RightUpLeg", "RightUpLeg", "RightLeg", "RightLeg", "RightFoot", "RightFoot", "RightToe", "RightToe",
+            "Spine", "Spine", "Spine1", "Spine1", "Spine2", "Spine2", "Neck", "Neck", "Head", "Head",
+            "LeftShoulder", "LeftShoulder", "LeftArm", "LeftArm", "LeftForeArm", "LeftForeArm", "LeftHand", "LeftHand",
+            "RightShoulder", "RightShoulder", "RightArm", "RightArm", "RightForeArm", "RightForeArm", "RightHand", "RightHand",
+        });
+
+        /// <summary>
+        /// The CMU database in B. Hahne's 2010 MotionBuilder-friendly BVH conversion (31 joints): LowerBack,
+        /// Spine, Spine1 become Spine, Spine1, Spine2; Neck + Neck1 become Neck; ToeBase becomes Toe.
+        /// LHipJoint, RHipJoint and the finger and thumb joints have no counterpart.
+        /// </summary>
+        public static JointMap Cmu { get; } = Build("cmu", new[]
+        {
+            "Hips", "Hips", "LeftUpLeg", "LeftUpLeg", "LeftLeg", "LeftLeg", "LeftFoot", "LeftFoot", "LeftToe", "LeftToeBase",
+            "RightUpLeg", "RightUpLeg", "RightLeg", "RightLeg", "RightFoot", "RightFoot", "RightToe", "RightToeBase",
+            "Spine", "LowerBack", "Spine1", "Spine", "Spine2", "Spine1", "Neck", "Neck|Neck1", "Head", "Head",
+            "LeftShoulder", "LeftShoulder", "LeftArm", "LeftArm", "LeftForeArm", "LeftForeArm", "LeftHand", "LeftHand",
+            "RightShoulder", "RightShoulder", "RightArm", "RightArm", "RightForeArm", "RightForeArm", "RightHand", "RightHand",
+        });
+
+        /// <summary>Mixamo rigs (<c>mixamorig:Hips</c>, …; the prefix is ignored): the names equal LaFAN1's except the toes.</summary>
+        public static JointMap Mixamo { get; } = Build("mixamo", new[]
+        {
+            "Hips", "Hips", "LeftUpLeg", "LeftUpLeg", "LeftLeg", "LeftLeg", "LeftFoot", "LeftFoot", "LeftToe", "LeftToeBase",
+            "RightUpLeg", "RightUpLeg", "RightLeg", "RightLeg", "RightFoot", "RightFoot", "RightToe", "RightToeBase",
+            "Spine", "Spine", "Spine1", "Spine1", "Spine2", "Spine2", "Neck", "Neck", "Head", "Head",
+            "LeftShoulder", "LeftShoulder", "LeftArm", "LeftArm", "LeftForeArm", "LeftForeArm", "LeftHand", "LeftHand",
+            "RightShoulder", "RightShoulder", "RightArm", "RightArm", "RightForeArm", "RightForeArm", "RightHand", "RightHand",
+        });
+
+        /// <summary>
+        /// Unity's <c>HumanBodyBones</c> names (Hips, LeftUpperLeg, …, Chest, UpperChest), as the Unity layer
+        /// names the joints it reads from an <c>Avatar</c>.
+        /// </summary>
+        public static JointMap UnityHumanoid { get; } = Build("unity-humanoid", new[]
+        {
+            "Hips", "Hips", "LeftUpLeg", "LeftUpperLeg", "LeftLeg", "LeftLowerLeg", "LeftFoot", "LeftFoot", "LeftToe", "LeftToes",
+            "RightUpLeg", "RightUpperLeg", "RightLeg", "RightLowerLeg", "RightFoot", "RightFoot", "RightToe", "RightToes",
+            "Spine", "Spine", "Spine1", "Chest", "Spine2", "UpperChest", "Neck", "Neck", "Head", "Head",
+            "LeftShoulder", "LeftShoulder", "LeftArm", "LeftUpperArm", "LeftForeArm", "LeftLowerArm", "LeftHand", "LeftHand",
+            "RightShoulder", "RightShoulder", "RightArm", "RightUpperArm", "RightForeArm", "RightLowerArm", "RightHand", "RightHand",
+        });
+
+        /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
+        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid };
+
+        /// <summary>
+        /// The built-in map that finds the most of <paramref name="target"/>'s joints in
+        /// <paramref name="source"/> (all of them when the source follows one of the conventions).
+        /// </summary>
+        public static JointMap Detect(Skeleton source, Skeleton target)
+        {
+            if (source == null) throw new ArgumentNullException(nameof(source));
+            if (target == null) throw new ArgumentNullException(nameof(target));
+            JointMap best = BuiltIn[0];
+            int bestCount = -1;
+            foreach (JointMap map in BuiltIn)
+            {
+                int count = 0;
+                for (int j = 0; j < target.JointCount; j++)
+                {
+                    IReadOnlyList<string>? chain = map.SourceChain(target.Names[j]);
+                    if (chain != null && FindChain(source, chain) != null) count++;
+                }
+
+                if (count > bestCount)
+                {
+                    best = map;
+                    bestCount = count;
+                }
+            }
+
+            return best;
+        }
+
+        /// <summary>
+        /// Reads a user map: a JSON object whose keys are target (model) joint names and whose values are
+        /// a source joint name or an array of names (a chain, parent first), e.g.
+        /// <c>{"Hips": "pelvis", "Neck": ["neck_01", "neck_02"], "LeftToe": "ball_l"}</c>.
+        /// Target joints the file does not name are taken from <paramref name="fallback"/> (when given).
+        /// </summary>
+        /// <exception cref="DataFormatException">Not valid JSON, or a value is not a name or an array of names (file and line named).</exception>
+        public static JointMap FromJson(string text, string sourceName, JointMap? fallback = null)
+        {
+            JsonValue root = JsonValue.Parse(text, sourceName);
+            IReadOnlyDictionary<string, JsonValue> members = root.ExpectObject("the joint map");
+            var chains = new List<KeyValuePair<string, string[]>>();
+            var named = new HashSet<string>(StringComparer.Ordinal);
+            foreach (KeyValuePair<string, JsonValue> kv in members)
+            {
+                string[] chain;
+                if (kv.Value.Kind == JsonKind.String)
+                {
+                    chain = new[] { kv.Value.ExpectString(kv.Key) };
+                }
+                else
+                {
+                    IReadOnlyList<JsonValue> items = kv.Value.ExpectArray($"\"{kv.Key}\" (a source joint name or an array of names)");
+                    if (items.Count == 0)
+                    {
+                        throw new DataFormatException(sourceName, kv.Value.Line, $"\"{kv.Key}\" maps to an empty array", "expected one or more source joint names, parent first");
+                    }
+
+                    chain = new string[items.Count];
+                    for (int i = 0; i < chain.Length; i++) chain[i] = items[i].ExpectString($"\"{kv.Key}\"[{i}]");
+                }
+
+                foreach (string s in chain)
+                {
+                    if (string.IsNullOrWhiteSpace(s))
+                    {
+                        throw new DataFormatException(sourceName, kv.Value.Line, $"\"{kv.Key}\" maps to an empty name", "expected source joint names");
+                    }
+                }
+
+                chains.Add(new KeyValuePair<string, string[]>(kv.Key, chain));
+                named.Add(kv.Key);
+            }
+
+            if (fallback != null)
+            {
+                foreach (string t in fallback.TargetJoints)
+                {
+                    if (!named.Contains(t)) chains.Add(new KeyValuePair<string, string[]>(t, (string[])fallback._chains[t].Clone()));
+                }
+            }
+
+            return new JointMap(sourceName, chains);
+        }
+
+        /// <summary>Reads a user map file (see <see cref="FromJson"/>).</summary>
+        public static JointMap Load(string path, JointMap? fallback = null) => FromJson(File.ReadAllText(path), path, fallback);
+
+        /// <summary>
+        /// Index of the joint named <paramref name="name"/> in <paramref name="skeleton"/>: an exact match
+        /// first, then a match ignoring namespace prefixes up to the last ':' (−1 when none or ambiguous).
+        /// </summary>
+        public static int FindJoint(Skeleton skeleton, string name)
+        {
+            int exact = skeleton.IndexOf(name);
+            if (exact >= 0) return exact;
+            string bare = StripNamespace(name);
+            int found = -1;
+            for (int j = 0; j < skeleton.JointCount; j++)
+            {
+                if (string.Equals(StripNamespace(skeleton.Names[j]), bare, StringComparison.Ordinal))
+                {
+                    if (found >= 0) return -1;
+                    found = j;
+                }
+            }
+
+            return found;
+        }
+
+        /// <summary>The indices of a chain's joints in <paramref name="skeleton"/> (<see cref="FindJoint"/>), or null when any is missing.</summary>
+        public static int[]? FindChain(Skeleton skeleton, IReadOnlyList<string> chain)
+        {
+            var indices = new int[chain.Count];
+            for (int i = 0; i < indices.Length; i++)
+            {
+                indices[i] = FindJoint(skeleton, chain[i]);
+                if (indices[i] < 0) return null;
+            }
+
+            return indices;
+        }
+
+        private static string StripNamespace(string name)
+        {
+            int colon = name.LastIndexOf(':');
+            return colon >= 0 ? name.Substring(colon + 1) : name;
+        }
+
+        private static JointMap Build(string name, string[] pairs)
+        {
+            var chains = new List<KeyValuePair<string, string[]>>(pairs.Length / 2);
+            for (int i = 0; i < pairs.Length; i += 2)
+            {
+                chains.Add(new KeyValuePair<string, string[]>(pairs[i], pairs[i + 1].Split('|')));
+            }
+
+            return new JointMap(name, chains);
+        }
+    }
+}

@@ -1,0 +1,526 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Retargeting
+{
+    /// <summary>
+    /// Moves motion from a source skeleton (any humanoid: CMU, Mixamo, a Unity rig, another BVH) onto a
+    /// target skeleton (the model's) and back, so that every mapped bone points the same way in the world
+    /// on every frame.
+    /// </summary>
+    /// <remarks>
+    /// <para><b>Correspondence.</b> A <see cref="JointMap"/> gives each target joint a chain of source
+    /// joints. Target joint j turns as its chain's last source joint s(j) does. Every target joint must be
+    /// found (otherwise <see cref="JointMapException"/> lists the missing ones); source joints outside the
+    /// chains are unmapped: their rotations are folded into the next mapped joint below them on the way
+    /// to the target and kept from the source clip on the way back.</para>
+    /// <para><b>Reference poses.</b> Zero poses are not compared (LaFAN1's bones all point along +X at
+    /// zero rotations). The target declares a reference pose (for the model
+    /// <see cref="ReferencePose.ModelTPose"/>), the source gives one (its zero pose or a frame, e.g.
+    /// CMU's T-pose at frame 0). The target's reference is first aligned to the source's: the root turns
+    /// about +Y by the yaw that best matches the horizontal directions from the root to its children
+    /// (to every mapped joint when those give none), so both face the same way; then, parents first,
+    /// each target joint with exactly one child swings by the shortest arc that makes its bone point
+    /// like the source's bone from s(j) to the first joint of the child's chain. A joint whose bone cannot be compared — several children (hips, chest),
+    /// no child (hands, head, toes), or a zero-length bone on either side (CMU's LowerBack, Neck, hip and
+    /// shoulder joints sit on their parents) — turns with its parent's alignment. The aligned pose keeps
+    /// the declared twists, so the target's local rotations stay in the range it is used to.</para>
+    /// <para><b>Rotations.</b> With G the reference global rotations (target aligned), the per-joint
+    /// correction is C_j = G_s(j)⁻¹ · G_j. A target local rotation is q_j = C_p⁻¹ · (g_s(p)⁻¹ g_s(j)) · C_j,
+    /// where the middle term is the product of the source's local rotations from below s(p) down to s(j);
+    /// the root's is g_s(root) · C_root. So target globals are g_j = g_s(j) · C_j: every bone that was
+    /// aligned points like the source's on every frame, and the map back is the exact inverse.</para>
+    /// <para><b>Root.</b> The target root's position is the source's s(root) global position times
+    /// <see cref="RootScale"/>: the ratio of the two skeletons' leg lengths, each measured as the root's
+    /// height above its lowest mapped joint in the reference pose. It includes the unit change (CMU's
+    /// 0.056444 m units to LaFAN1's centimetres) and the difference in size, so feet stay on the ground
+    /// (Y = 0 in both) and strides keep their proportion to the legs. A caller that knows better (e.g.
+    /// both files' units and no size change wanted) passes its own scale to <see cref="Create"/>.</para>
+    /// <para><b>Frame rate.</b> Both directions keep the frame rate; use <see cref="MotionResampler"/>
+    /// to reach the model's rate and back.</para>
+    /// </remarks>
+    public sealed class SkeletonMap
+    {
+        private readonly int[] _sourceOf;        // target joint → the last joint of its source chain
+        private readonly int[] _sourceFirst;     // target joint → the first joint of its source chain
+        private readonly int[][] _carried;       // target joint → source joints above s(j) on its path, top first
+        private readonly QuaternionD[] _correction;
+        private readonly double[] _scratchPositions;
+        private readonly double[] _scratchRotations;
+
+        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, double? rootScale)
+        {
+            SourceReference = source;
+            Map = map;
+            _sourceOf = sourceOf;
+            _sourceFirst = sourceFirst;
+            _carried = carried;
+            Skeleton ts = target.Skeleton, ss = source.Skeleton;
+            int jt = ts.JointCount;
+
+            // 1. Align the target's declared reference to the source's.
+            var align = new QuaternionD[jt];
+            var declared = new QuaternionD[jt];
+            for (int j = 0; j < jt; j++) declared[j] = target.GlobalRotation(j);
+            align[0] = RootYaw(source, target, sourceOf, sourceFirst);
+            double sourceEps = 1e-6 * LongestBone(source), targetEps = 1e-6 * LongestBone(target);
+            var children = new List<int>[jt];
+            for (int j = 0; j < jt; j++) children[j] = new List<int>();
+            for (int j = 1; j < jt; j++) children[ts.Parents[j]].Add(j);
+            var aligned = new bool[jt];
+            for (int j = 1; j < jt; j++)
+            {
+                QuaternionD inherited = align[ts.Parents[j]];
+                align[j] = inherited;
+                if (children[j].Count != 1) continue;
+                int c = children[j][0];
+                Vector3D a = target.GlobalPosition(c) - target.GlobalPosition(j);
+                Vector3D b = source.GlobalPosition(sourceFirst[c]) - source.GlobalPosition(sourceOf[j]);
+                if (a.Length <= targetEps || b.Length <= sourceEps) continue;
+                Vector3D from = Quaternions.Apply(inherited, a);
+                align[j] = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(from, b, Vector3D.UnitY), inherited));
+                aligned[j] = true;
+            }
+
+            var targetLocal = new double[4 * jt];
+            var global = new QuaternionD[jt];
+            _correction = new QuaternionD[jt];
+            for (int j = 0; j < jt; j++)
+            {
+                global[j] = Quaternions.Normalize(Quaternions.Multiply(align[j], declared[j]));
+                int p = ts.Parents[j];
+                QuaternionD local = p < 0 ? global[j] : Quaternions.Multiply(Quaternions.Conjugate(global[p]), global[j]);
+                Quaternions.Normalize(local).Write(targetLocal, 4 * j);
+                _correction[j] = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(source.GlobalRotation(sourceOf[j])), global[j]));
+            }
+
+            TargetReference = new ReferencePose(ts, targetLocal, target.RootPosition);
+            AlignedBones = aligned;
+
+            // 2. Root scale from the leg lengths of the two reference poses.
+            SourceLegLength = LegLength(source, sourceFirst, sourceOf[0]);
+            TargetLegLength = LegLength(TargetReference, Identity(jt), 0);
+            if (rootScale == null && (!(SourceLegLength > 0) || !(TargetLegLength > 0)))
+            {
+                throw new JointMapException(map.Name, $"the reference poses give leg lengths {SourceLegLength:G4} (source) and {TargetLegLength:G4} (target)",
+                    "expected reference poses standing upright (Y up) with joints below the root; name a standing frame as the reference");
+            }
+
+            RootScale = rootScale ?? TargetLegLength / SourceLegLength;
+
+            _scratchPositions = new double[3 * ss.JointCount];
+            _scratchRotations = new double[4 * ss.JointCount];
+            var unmapped = new List<string>();
+            var inChains = new bool[ss.JointCount];
+            for (int j = 0; j < jt; j++)
+            {
+                IReadOnlyList<string> chain = map.SourceChain(ts.Names[j])!;
+                foreach (string n in chain) inChains[JointMap.FindJoint(ss, n)] = true;
+            }
+
+            for (int s = 0; s < ss.JointCount; s++)
+            {
+                if (!inChains[s]) unmapped.Add(ss.Names[s]);
+            }
+
+            UnmappedSourceJoints = unmapped;
+        }
+
+        /// <summary>The source skeleton's reference pose.</summary>
+        public ReferencePose SourceReference { get; }
+
+        /// <summary>The target skeleton's reference pose after alignment to the source's (the declared pose with corrected bone directions).</summary>
+        public ReferencePose TargetReference { get; }
+
+        /// <summary>The joint correspondence used.</summary>
+        public JointMap Map { get; }
+
+        /// <summary>The source skeleton.</summary>
+        public Skeleton Source => SourceReference.Skeleton;
+
+        /// <summary>The target skeleton.</summary>
+        public Skeleton Target => TargetReference.Skeleton;
+
+        /// <summary>Target units per source unit for the root's position (target leg length ÷ source leg length).</summary>
+        public double RootScale { get; }
+
+        /// <summary>The source's leg length in its units: the root's height above its lowest mapped joint in the reference pose.</summary>
+        public double SourceLegLength { get; }
+
+        /// <summary>The target's leg length in its units, measured the same way on its aligned reference pose.</summary>
+        public double TargetLegLength { get; }
+
+        /// <summary>Source joints outside every chain (they keep the source clip's rotations on the way back).</summary>
+        public IReadOnlyList<string> UnmappedSourceJoints { get; }
+
+        /// <summary>
+        /// Per target joint: true when its bone (to its only child) was aligned to the source's, so its world
+        /// direction follows the source bone on every frame; false for the root, joints with several or no
+        /// children, and zero-length bones (they turn with their parent's alignment).
+        /// </summary>
+        public IReadOnlyList<bool> AlignedBones { get; }
+
+        /// <summary>The source joint whose rotation target joint <paramref name="targetJoint"/> follows (the last of its chain).</summary>
+        public int SourceJointOf(int targetJoint) => _sourceOf[targetJoint];
+
+        /// <summary>
+        /// Builds the map between <paramref name="source"/> and <paramref name="target"/>.
+        /// </summary>
+        /// <param name="source">The source skeleton's reference pose.</param>
+        /// <param name="target">The target skeleton's declared reference pose (<see cref="ReferencePose.ModelTPose"/> for the model).</param>
+        /// <param name="map">The correspondence; null picks the best built-in one (<see cref="JointMap.Detect"/>).</param>
+        /// <param name="sourceName">The source's file or name, for messages.</param>
+        /// <param name="rootScale">Target units per source unit for the root's position; null (the default) for the ratio of leg lengths.</param>
+        /// <exception cref="JointMapException">Target joints are missing from the source (all named), or a chain does not fit the source's hierarchy.</exception>
+        public static SkeletonMap Create(ReferencePose source, ReferencePose target, JointMap? map, string sourceName, double? rootScale = null)
+        {
+            if (rootScale.HasValue && (!(rootScale.Value > 0) || double.IsInfinity(rootScale.Value)))
+            {
+                throw new ArgumentOutOfRangeException(nameof(rootScale), "the root scale must be a positive number");
+            }
+
+            if (source == null) throw new ArgumentNullException(nameof(source));
+            if (target == null) throw new ArgumentNullException(nameof(target));
+            sourceName ??= "<source>";
+            Skeleton ss = source.Skeleton, ts = target.Skeleton;
+            map ??= JointMap.Detect(ss, ts);
+            int jt = ts.JointCount;
+            var chains = new int[jt][];
+            var missing = new List<string>();
+            for (int j = 0; j < jt; j++)
+            {
+                IReadOnlyList<string>? chain = map.SourceChain(ts.Names[j]);
+                int[]? found = chain == null ? null : JointMap.FindChain(ss, chain);
+                if (found == null)
+                {
+                    missing.Add(chain == null ? ts.Names[j] : ts.Names[j] + " (" + string.Join("+", chain) + ")");
+                    continue;
+                }
+
+                chains[j] = found;
+            }
+
+            if (missing.Count > 0)
+            {
+                var names = new List<string>();
+                for (int j = 0; j < jt; j++) if (chains[j] == null) names.Add(ts.Names[j]);
+                throw new JointMapException(sourceName,
+                    $"the skeleton has no joint for {missing.Count} of the target's {jt} joints: {string.Join(", ", missing)} (joint map '{map.Name}')",
+                    "expected joints named as in LaFAN1, CMU, Mixamo or Unity HumanBodyBones; pass a JSON joint map (--map) naming the source joint of each",
+                    names);
+            }
+
+            var owner = new int[ss.JointCount];
+            for (int s = 0; s < owner.Length; s++) owner[s] = -1;
+            var sourceOf = new int[jt];
+            var sourceFirst = new int[jt];
+            var carried = new int[jt][];
+            for (int j = 0; j < jt; j++)
+            {
+                int[] chain = chains[j];
+                for (int i = 0; i < chain.Length; i++)
+                {
+                    int s = chain[i];
+                    if (owner[s] >= 0)
+                    {
+                        throw new JointMapException(sourceName, $"source joint '{ss.Names[s]}' is mapped to both '{ts.Names[owner[s]]}' and '{ts.Names[j]}'",
+                            "expected each source joint in at most one target joint's chain; fix the joint map");
+                    }
+
+                    owner[s] = j;
+                    if (i > 0 && ss.Parents[s] != chain[i - 1])
+                    {
+                        throw new JointMapException(sourceName, $"the chain of '{ts.Names[j]}' lists '{ss.Names[s]}' after '{ss.Names[chain[i - 1]]}', which is not its parent",
+                            "expected a chain of source joints, each the child of the one before");
+                    }
+                }
+
+                sourceOf[j] = chain[chain.Length - 1];
+                sourceFirst[j] = chain[0];
+                int stop = j == 0 ? -1 : sourceOf[ts.Parents[j]];
+                var path = new List<int>();
+                int walk = ss.Parents[sourceOf[j]];
+                while (walk != stop)
+                {
+                    if (walk < 0)
+                    {
+                        throw new JointMapException(sourceName,
+                            $"'{ts.Names[j]}' maps to '{ss.Names[sourceOf[j]]}', which is not below '{ss.Names[stop]}' (the source joint of its parent '{ts.Names[ts.Parents[j]]}')",
+                            "expected the source joints to keep the target's hierarchy; fix the joint map");
+                    }
+
+                    path.Add(walk);
+                    walk = ss.Parents[walk];
+                }
+
+                path.Reverse();
+                carried[j] = path.ToArray();
+            }
+
+            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, rootScale);
+        }
+
+        /// <summary>
+        /// The source motion on the target skeleton, at the source's frame rate: mapped rotations through the
+        /// corrections, the root's position scaled by <see cref="RootScale"/>, the other joints at the
+        /// target's offsets.
+        /// </summary>
+        public MotionClip ToTarget(MotionClip source)
+        {
+            if (source == null) throw new ArgumentNullException(nameof(source));
+            RequireSkeleton(source.Skeleton, Source, "source");
+            int js = Source.JointCount, jt = Target.JointCount, n = source.FrameCount;
+            var positions = new double[n * jt * 3];
+            var rotations = new double[n * jt * 4];
+            ReadOnlySpan<double> targetOffsets = Target.OffsetSpan;
+            for (int f = 0; f < n; f++)
+            {
+                Span<double> tp = positions.AsSpan(f * jt * 3, jt * 3);
+                targetOffsets.CopyTo(tp);
+                ToTargetFrame(source.LocalPositions.AsSpan(source.PositionIndex(f, 0), 3 * js), source.LocalRotations.AsSpan(source.RotationIndex(f, 0), 4 * js),
+                    tp.Slice(0, 3), rotations.AsSpan(f * jt * 4, jt * 4));
+            }
+
+            Quaternions.FixContinuity(rotations, n, jt);
+            return new MotionClip(Target, n, source.FrameTime, positions, rotations);
+        }
+
+        /// <summary>
+        /// One pose from the source skeleton onto the target's (allocation-free; uses scratch memory of this
+        /// map, so one thread at a time per map).
+        /// </summary>
+        /// <param name="sourceLocalPositions">Source joints × 3 local translations (the root's is its position).</param>
+        /// <param name="sourceLocalRotations">Source joints × 4 local rotations (w, x, y, z).</param>
+        /// <param name="targetRootPosition">Output: the target root's position (3 values).</param>
+        /// <param name="targetLocalRotations">Output: target joints × 4 local rotations.</param>
+        public void ToTargetFrame(ReadOnlySpan<double> sourceLocalPositions, ReadOnlySpan<double> sourceLocalRotations, Span<double> targetRootPosition, Span<double> targetLocalRotations)
+        {
+            int js = Source.JointCount, jt = Target.JointCount;
+            if (sourceLocalPositions.Length < 3 * js || sourceLocalRotations.Length < 4 * js || targetRootPosition.Length < 3 || targetLocalRotations.Length < 4 * jt)
+            {
+                throw new ArgumentException("a span is too short; expected source joints × 3 and × 4, 3, and target joints × 4 values");
+            }
+
+            double[] gPos = _scratchPositions, gRot = _scratchRotations;
+            ForwardKinematics.ComputeFrame(Source.ParentSpan, sourceLocalPositions, Vector3D.Read(sourceLocalPositions, 0), sourceLocalRotations, gPos, gRot);
+            ReadOnlySpan<int> parents = Target.ParentSpan;
+            for (int j = 0; j < jt; j++)
+            {
+                QuaternionD g = QuaternionD.Read(gRot, 4 * _sourceOf[j]);
+                QuaternionD q;
+                if (j == 0)
+                {
+                    q = Quaternions.Multiply(g, _correction[0]);
+                }
+                else
+                {
+                    int p = parents[j];
+                    QuaternionD relative = Quaternions.Multiply(Quaternions.Conjugate(QuaternionD.Read(gRot, 4 * _sourceOf[p])), g);
+                    q = Quaternions.Multiply(Quaternions.Conjugate(_correction[p]), Quaternions.Multiply(relative, _correction[j]));
+                }
+
+                Quaternions.Normalize(q).Write(targetLocalRotations, 4 * j);
+            }
+
+            (RootScale * Vector3D.Read(gPos, 3 * _sourceOf[0])).Write(targetRootPosition, 0);
+        }
+
+        /// <summary>
+        /// Target motion back on the source skeleton, at the target clip's frame times (frame i at
+        /// i × its frame time, measured from the source clip's frame 0). Mapped joints get the exact inverse
+        /// of <see cref="ToTarget"/>; every other value (unmapped joints, the leading joints of a chain,
+        /// non-root translations) comes from <paramref name="source"/> at the same time, by SLERP (LERP for
+        /// translations) between the source frames around it — or, when <paramref name="sourceKeyFrames"/>
+        /// is given, between the key frames around it (before the first key the first is held, after the
+        /// last the last), for a source that only holds valid poses at its keys.
+        /// </summary>
+        /// <param name="target">Dense motion on the target skeleton.</param>
+        /// <param name="source">The source clip the unmapped values come from (on <see cref="Source"/>).</param>
+        /// <param name="sourceKeyFrames">Optional strictly increasing frame indices of <paramref name="source"/> that hold valid poses.</param>
+        public MotionClip ToSource(MotionClip target, MotionClip source, IReadOnlyList<int>? sourceKeyFrames = null)
+        {
+            if (target == null) throw new ArgumentNullException(nameof(target));
+            if (source == null) throw new ArgumentNullException(nameof(source));
+            RequireSkeleton(target.Skeleton, Target, "target");
+            RequireSkeleton(source.Skeleton, Source, "source");
+            if (source.FrameCount == 0) throw new ArgumentException("the source clip has no frames", nameof(source));
+            int[]? keys = CheckKeys(sourceKeyFrames, source.FrameCount);
+            int js = Source.JointCount, jt = Target.JointCount, n = target.FrameCount;
+            var positions = new double[n * js * 3];
+            var rotations = new double[n * js * 4];
+            for (int f = 0; f < n; f++)
+            {
+                Span<double> lp = positions.AsSpan(f * js * 3, js * 3);
+                Span<double> lr = rotations.AsSpan(f * js * 4, js * 4);
+                double sourceFrame = f * target.FrameTime / source.FrameTime;
+                if (keys == null)
+                {
+                    MotionResampler.Sample(source, sourceFrame, lp, lr);
+                }
+                else
+                {
+                    SampleKeys(source, keys, sourceFrame, lp, lr);
+                }
+
+                ToSourceFrame(Vector3D.Read(target.LocalPositions, target.PositionIndex(f, 0)), target.LocalRotations.AsSpan(target.RotationIndex(f, 0), jt * 4), lp, lr);
+            }
+
+            Quaternions.FixContinuity(rotations, n, js);
+            return new MotionClip(Source, n, target.FrameTime, positions, rotations);
+        }
+
+        /// <summary>
+        /// One target pose back onto the source skeleton, in place (allocation-free): on input the source
+        /// spans hold a source pose that supplies every unmapped value (e.g. the character's current pose);
+        /// on output the mapped joints' rotations and the root's position are replaced.
+        /// </summary>
+        /// <param name="targetRootPosition">The target root's position.</param>
+        /// <param name="targetLocalRotations">Target joints × 4 local rotations.</param>
+        /// <param name="sourceLocalPositions">In/out: source joints × 3 local translations (only the root's is written).</param>
+        /// <param name="sourceLocalRotations">In/out: source joints × 4 local rotations.</param>
+        public void ToSourceFrame(Vector3D targetRootPosition, ReadOnlySpan<double> targetLocalRotations, Span<double> sourceLocalPositions, Span<double> sourceLocalRotations)
+        {
+            int js = Source.JointCount, jt = Target.JointCount;
+            if (targetLocalRotations.Length < 4 * jt || sourceLocalPositions.Length < 3 * js || sourceLocalRotations.Length < 4 * js)
+            {
+                throw new ArgumentException("a span is too short; expected target joints × 4, and source joints × 3 and × 4 values");
+            }
+
+            ReadOnlySpan<int> parents = Target.ParentSpan;
+            for (int j = 0; j < jt; j++)
+            {
+                QuaternionD qt = QuaternionD.Read(targetLocalRotations, 4 * j);
+                // The source-side rotation from s(parent) to s(j) (for the root: its global rotation).
+                QuaternionD wanted = j == 0
+                    ? Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[0]))
+                    : Quaternions.Multiply(_correction[parents[j]], Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[j])));
+                QuaternionD above = QuaternionD.Identity;
+                int[] carried = _carried[j];
+                for (int i = 0; i < carried.Length; i++) above = Quaternions.Multiply(above, QuaternionD.Read(sourceLocalRotations, 4 * carried[i]));
+                Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(above), wanted)).Write(sourceLocalRotations, 4 * _sourceOf[j]);
+            }
+
+            // The root: place the source root so that s(root) lands at the target root ÷ scale.
+            Vector3D hips = (1.0 / RootScale) * targetRootPosition;
+            int[] path = _carried[0];
+            if (path.Length == 0)
+            {
+                hips.Write(sourceLocalPositions, 0);
+                return;
+            }
+
+            Vector3D offset = Vector3D.Zero;
+            QuaternionD g = QuaternionD.Read(sourceLocalRotations, 0);
+            for (int i = 1; i <= path.Length; i++)
+            {
+                int s = i < path.Length ? path[i] : _sourceOf[0];
+                offset = offset + Quaternions.Apply(g, Vector3D.Read(sourceLocalPositions, 3 * s));
+                if (i < path.Length) g = Quaternions.Multiply(g, QuaternionD.Read(sourceLocalRotations, 4 * s));
+            }
+
+            (hips - offset).Write(sourceLocalPositions, 0);
+        }
+
+        private static void SampleKeys(MotionClip source, int[] keys, double frame, Span<double> positions, Span<double> rotations)
+        {
+            if (frame <= keys[0])
+            {
+                MotionResampler.Blend(source, keys[0], keys[0], 0, positions, rotations);
+                return;
+            }
+
+            int last = keys.Length - 1;
+            if (frame >= keys[last])
+            {
+                MotionResampler.Blend(source, keys[last], keys[last], 0, positions, rotations);
+                return;
+            }
+
+            int k = Array.BinarySearch(keys, (int)Math.Floor(frame));
+            if (k < 0) k = ~k - 1;
+            double t = (frame - keys[k]) / (keys[k + 1] - keys[k]);
+            MotionResampler.Blend(source, keys[k], keys[k + 1], t < 1e-12 ? 0 : t, positions, rotations);
+        }
+
+        private static int[]? CheckKeys(IReadOnlyList<int>? keys, int frameCount)
+        {
+            if (keys == null) return null;
+            if (keys.Count == 0) throw new ArgumentException("source key frames are empty; pass null to use every source frame", nameof(keys));
+            var result = new int[keys.Count];
+            for (int i = 0; i < result.Length; i++)
+            {
+                result[i] = keys[i];
+                if (result[i] < 0 || result[i] >= frameCount) throw new ArgumentOutOfRangeException(nameof(keys), $"key frame {result[i]} is not in the source clip (0..{frameCount - 1})");
+                if (i > 0 && result[i] <= result[i - 1]) throw new ArgumentException("source key frames must be strictly increasing", nameof(keys));
+            }
+
+            return result;
+        }
+
+        private static void RequireSkeleton(Skeleton given, Skeleton expected, string what)
+        {
+            if (!ReferenceEquals(given, expected) && !given.HasSameHierarchy(expected))
+            {
+                throw new ArgumentException($"the {what} clip is not on the map's {what} skeleton", what);
+            }
+        }
+
+        private static QuaternionD RootYaw(ReferencePose source, ReferencePose target, int[] sourceOf, int[] sourceFirst)
+        {
+            // Least-squares yaw between the horizontal parts of unit directions from the root to joints of
+            // the target and from s(root) to their source counterparts: θ = atan2(Σ (a × b)·Y, Σ a·b).
+            // The root's own children come first: they move rigidly with the root, so a reference pose whose
+            // limbs differ from the target's (arms lowered, legs spread) does not bias the yaw. Only when
+            // they give no horizontal direction (e.g. all of zero length) every joint is used.
+            Skeleton ts = target.Skeleton;
+            for (int pass = 0; pass < 2; pass++)
+            {
+                double cross = 0, dot = 0, weight = 0;
+                Vector3D t0 = target.GlobalPosition(0), s0 = source.GlobalPosition(sourceOf[0]);
+                for (int k = 1; k < ts.JointCount; k++)
+                {
+                    if (pass == 0 && ts.Parents[k] != 0) continue;
+                    Vector3D a = target.GlobalPosition(k) - t0, b = source.GlobalPosition(sourceFirst[k]) - s0;
+                    double la = a.Length, lb = b.Length;
+                    if (la < 1e-12 || lb < 1e-12) continue;
+                    a = (1.0 / la) * a;
+                    b = (1.0 / lb) * b;
+                    cross += a.Z * b.X - a.X * b.Z;
+                    dot += a.X * b.X + a.Z * b.Z;
+                    weight += Math.Sqrt((a.X * a.X + a.Z * a.Z) * (b.X * b.X + b.Z * b.Z));
+                }
+
+                if (weight < 0.5 && pass == 0) continue;
+                double half = 0.5 * Math.Atan2(cross, dot);
+                return new QuaternionD(Math.Cos(half), 0.0, Math.Sin(half), 0.0);
+            }
+
+            return QuaternionD.Identity;
+        }
+
+        private static double LongestBone(ReferencePose pose)
+        {
+            double longest = 0;
+            ReadOnlySpan<double> o = pose.Skeleton.OffsetSpan;
+            for (int j = 1; j < pose.Skeleton.JointCount; j++) longest = Math.Max(longest, Vector3D.Read(o, 3 * j).Length);
+            return longest;
+        }
+
+        private static double LegLength(ReferencePose pose, int[] joints, int root)
+        {
+            double lowest = double.PositiveInfinity;
+            foreach (int j in joints) lowest = Math.Min(lowest, pose.GlobalPosition(j).Y);
+            return pose.GlobalPosition(root).Y - lowest;
+        }
+
+        private static int[] Identity(int count)
+        {
+            var a = new int[count];
+            for (int i = 0; i < count; i++) a[i] = i;
+            return a;
+        }
+    }
+}
