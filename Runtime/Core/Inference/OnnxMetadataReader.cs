@@ -15,7 +15,7 @@ namespace DeltaInterpolator.Core.Inference
     /// <remarks>
     /// Every length is checked against the bytes left, varints are at most 10 bytes, groups are skipped
     /// with a depth counter (no recursion), and strings must be valid UTF-8; anything else is refused
-    /// with a <see cref="ModelContractException"/> (<c>FILE:0: what; expected</c>).
+    /// with a <see cref="ModelContractException"/> (<c>FILE: what; expected</c>).
     /// </remarks>
     public static class OnnxMetadataReader
     {

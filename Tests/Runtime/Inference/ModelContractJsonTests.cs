@@ -46,7 +46,7 @@ namespace DeltaInterpolator.Tests.Inference
         public void FromJsonRefusesAnInvalidContract()
         {
             var e = Assert.Throws<ModelContractException>(() => ModelContract.FromJson("{\"contract_version\": 1}", "Assets/Model.asset"))!;
-            Assert.That(e.Message, Does.StartWith("Assets/Model.asset:0: metadata 'deltainterp' has no \"graph\"; expected"));
+            Assert.That(e.Message, Does.StartWith("Assets/Model.asset: metadata 'deltainterp' has no \"graph\"; expected"));
         }
 
         private static void RoundTrip(ModelContract c, string exported)
