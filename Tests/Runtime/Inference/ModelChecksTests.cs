@@ -105,7 +105,7 @@ namespace DeltaInterpolator.Tests.Inference
             Assert.That(report[0].Message, Is.EqualTo("joint 2 ('Head') has parent 1 in the model but 0 in the character"));
 
             var e = Assert.Throws<ModelContractException>(() => Valid().CheckSkeleton(other, "the character"))!;
-            Assert.That(e.Message, Is.EqualTo("Models/test.onnx:0: joint 0 is 'Hips' in the model but 'Root' in the character; expected the same joint names in the same order; rename or reorder the joints, or train a model on this skeleton"));
+            Assert.That(e.Message, Is.EqualTo("Models/test.onnx: joint 0 is 'Hips' in the model but 'Root' in the character; expected the same joint names in the same order; rename or reorder the joints, or train a model on this skeleton"));
         }
 
         [Test]

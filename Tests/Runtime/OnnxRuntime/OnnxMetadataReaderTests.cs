@@ -54,7 +54,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 catch (ModelContractException e)
                 {
                     refused++;
-                    Assert.That(e.Message, Does.StartWith("cut.onnx:0: "));
+                    Assert.That(e.Message, Does.StartWith("cut.onnx: "));
                     Assert.That(e.Message, Does.Contain("; expected"));
                 }
             }
@@ -79,7 +79,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 catch (ModelContractException e)
                 {
                     refused++;
-                    Assert.That(e.Message, Does.StartWith("noise.onnx:0: "));
+                    Assert.That(e.Message, Does.StartWith("noise.onnx: "));
                     Assert.That(e.Message, Does.Not.Contain("\n"));
                 }
             }
@@ -99,7 +99,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void MalformedBytesAreNamed(byte[] bytes, string what)
         {
             var e = Assert.Throws<ModelContractException>(() => OnnxMetadataReader.Read(bytes, "bad.onnx"))!;
-            Assert.That(e.Message, Does.StartWith("bad.onnx:0: "));
+            Assert.That(e.Message, Does.StartWith("bad.onnx: "));
             Assert.That(e.Message, Does.Contain(what));
         }
 
