@@ -84,6 +84,20 @@ namespace DeltaInterpolator.Editor.Baking
             }
         }
 
+        // The whole graph only: a bake decodes every gap at once. Sentis on the CPU when installed,
+        // otherwise the first engine registered with InferenceBackends.
+        private static Inbetweener Load(InbetweeningModel model)
+        {
+            IInferenceBackendFactory? factory = InferenceBackends.Find("Sentis");
+            if (factory == null && InferenceBackends.All.Count > 0) factory = InferenceBackends.All[0];
+            if (factory == null)
+            {
+                throw new ModelContractException(model.name, "no inference engine is installed", "install com.unity.ai.inference 2.4.0 or later (Sentis)");
+            }
+
+            return new Inbetweener(factory.Create(model, ModelGraphKind.Whole)) { Id = model.name, DisplayName = model.name };
+        }
+
         private string? Problem()
         {
             if (_character == null) return "Assign the character (the GameObject the clips animate).";
@@ -113,7 +127,7 @@ namespace DeltaInterpolator.Editor.Baking
             GameObject character = _character!;
             try
             {
-                using (Inbetweener inbetweener = _model!.CreateInbetweener())
+                using (Inbetweener inbetweener = Load(_model!))
                 {
                     ModelContract contract = inbetweener.Contract;
                     Skeleton skeleton = contract.Skeleton;
@@ -175,7 +189,16 @@ namespace DeltaInterpolator.Editor.Baking
                     }
 
                     EditorUtility.DisplayProgressBar("In-between Baker", "Running the model…", 0.5f);
-                    MotionClip baked = ClipBaker.Bake(track.Motion, track.KeyFrames.ToArray(), inbetweener, _pastFrames);
+                    BakeSettings settings = BakeSettings.ForModel(contract);
+                    settings.PastFrames = _pastFrames;
+                    var baker = new ClipBaker(inbetweener, settings);
+                    BakePlan bakePlan = baker.Plan(track.Motion.FrameCount, track.KeyFrames.ToArray());
+                    if (bakePlan.Warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the keys", string.Join("\n", bakePlan.Warnings), "Bake anyway", "Cancel"))
+                    {
+                        return;
+                    }
+
+                    MotionClip baked = baker.Bake(track.Motion, bakePlan);
                     EditorUtility.ClearProgressBar();
                     ClipWriter.Save(CurveBuilder.Build(baked, paths, contract.UnitScale), rate, name);
                 }

@@ -10,8 +10,11 @@ namespace DeltaInterpolator.Editor.Models
     /// Keeps a model's contract past import. Sentis hands ONNX <c>metadata_props</c> only to this kind of
     /// callback, while the file is imported; a runtime Sentis model has none. For every <c>.onnx</c> that
     /// carries the <c>deltainterp</c> contract, the metadata is stored as a <see cref="TextAsset"/> inside
-    /// the imported asset (sub-asset <see cref="SubAssetName"/>, text of <see cref="ModelMetadataText"/>),
-    /// where the model asset references it and player builds include it. Other ONNX files are left alone.
+    /// the imported asset (sub-asset <see cref="SubAssetName"/>, text of <see cref="ModelMetadataText"/>).
+    /// The model asset's inspector (<see cref="InbetweeningModelEditor"/>) reads it the way the ONNX Runtime
+    /// backend reads a graph (metadata → <see cref="ModelContract.FromMetadata"/> → <see cref="ModelChecks"/>)
+    /// and copies the contract into <see cref="DeltaInterpolator.Unity.InbetweeningModel.ContractJson"/>, which
+    /// player builds carry. Other ONNX files are left alone.
     /// Sentis finds this class by reflection (<c>TypeCache</c>) and creates it with its parameterless
     /// constructor; reimport models imported before the package was installed.
     /// </summary>

@@ -2,6 +2,7 @@
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Unity;
 using Unity.InferenceEngine;
 
 namespace DeltaInterpolator.Sentis
@@ -13,6 +14,39 @@ namespace DeltaInterpolator.Sentis
     /// </summary>
     public static class SentisInbetweener
     {
+        /// <summary>
+        /// Loads the graphs of a model asset (the whole graph, and the keys and frame graphs when both are
+        /// assigned), each described by the contract the asset captured at import, as
+        /// <see cref="MotionInbetweener"/> does through <see cref="SentisBackendFactory"/>.
+        /// </summary>
+        /// <param name="model">The model asset.</param>
+        /// <param name="backendType">CPU (default) or a GPU backend; every graph runs on it.</param>
+        /// <exception cref="ModelContractException">A graph is missing, cannot be loaded or does not fit the contract.</exception>
+        public static Inbetweener Load(InbetweeningModel model, BackendType backendType = BackendType.CPU)
+        {
+            if (model == null) throw new ArgumentNullException(nameof(model));
+            var factory = new SentisBackendFactory(backendType == BackendType.CPU ? SentisBackendFactory.CpuName : SentisBackendFactory.GpuName, backendType);
+            IInferenceBackend whole = factory.Create(model, ModelGraphKind.Whole);
+            IInferenceBackend? keys = null;
+            IInferenceBackend? frame = null;
+            try
+            {
+                if (model.HasLazyGraphs)
+                {
+                    keys = factory.Create(model, ModelGraphKind.Keys);
+                    frame = factory.Create(model, ModelGraphKind.Frame);
+                }
+            }
+            catch
+            {
+                whole.Dispose();
+                keys?.Dispose();
+                throw;
+            }
+
+            return new Inbetweener(whole, keys, frame) { Id = model.name, DisplayName = model.name };
+        }
+
         /// <summary>
         /// Loads the whole graph and, when both are given, the keys and frame graphs for lazy decoding.
         /// </summary>

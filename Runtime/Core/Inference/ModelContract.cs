@@ -285,6 +285,18 @@ namespace DeltaInterpolator.Core.Inference
         }
 
         /// <summary>
+        /// This contract as the metadata of another graph of the same export (only <see cref="Graph"/>
+        /// differs): an engine asset stores the whole graph's contract once, and each graph's backend
+        /// describes itself with it.
+        /// </summary>
+        internal ModelContract ForGraph(ModelGraphKind graph)
+        {
+            var copy = (ModelContract)MemberwiseClone();
+            copy.Graph = graph;
+            return copy;
+        }
+
+        /// <summary>
         /// The <c>metadata_props</c> an exported graph carries for this contract (<c>contract_version</c> and
         /// <c>deltainterp</c> = <see cref="ToJson"/>): what a backend whose engine keeps no ONNX metadata (Sentis)
         /// passes in its <see cref="ModelDescription"/> when the contract was stored in an asset at import.

@@ -42,6 +42,24 @@ namespace DeltaInterpolator.Tests.Inference
             Assert.That(c.ToMetadata()[TensorNames.ContractVersionMetadata], Is.EqualTo(metadata[TensorNames.ContractVersionMetadata]));
         }
 
+        [TestCase("Tests/Fixtures/tiny-model.keys.onnx", ModelGraphKind.Keys)]
+        [TestCase("Tests/Fixtures/tiny-model.frame.onnx", ModelGraphKind.Frame)]
+        public void TheWholeContractForAnotherGraphIsThatGraphsContract(string relative, ModelGraphKind kind)
+        {
+            // An engine asset keeps the whole graph's contract once; the Sentis factory describes the keys
+            // and frame graphs with ForGraph(kind): it must equal what those exported files carry.
+            ModelContract whole = ModelContract.FromMetadata("whole", OnnxMetadataReader.Read(Repository("Tests/Fixtures/tiny-model.onnx")), new ModelCheckReport())!;
+            ModelContract exported = ModelContract.FromMetadata("other", OnnxMetadataReader.Read(Repository(relative)), new ModelCheckReport())!;
+            ModelContract forGraph = whole.ForGraph(kind);
+            Assert.That(forGraph.Graph, Is.EqualTo(kind));
+            Assert.That(whole.Graph, Is.EqualTo(ModelGraphKind.Whole), "the original is unchanged");
+            Assert.That(forGraph.ToJson(), Is.EqualTo(exported.ToJson()));
+            var report = new ModelCheckReport();
+            ModelContract read = ModelContract.FromMetadata("asset", forGraph.ToMetadata(), report)!;
+            ModelChecks.GraphKind(read, kind, report);
+            Assert.That(report.HasErrors, Is.False, string.Join("; ", report));
+        }
+
         [Test]
         public void FromJsonRefusesAnInvalidContract()
         {

@@ -12,5 +12,9 @@ namespace UnityEditor
         public static T LoadAssetAtPath<T>(string assetPath) where T : Object => throw null!;
 
         public static void SaveAssets() => throw null!;
+
+        public static string GetAssetPath(Object assetObject) => throw null!;
+
+        public static Object[] LoadAllAssetsAtPath(string assetPath) => throw null!;
     }
 }

@@ -6,5 +6,7 @@ namespace UnityEditor.AssetImporters
     public partial class AssetImportContext
     {
         public void AddObjectToAsset(string identifier, Object obj) => throw null!;
+
+        public string assetPath { get => throw null!; }
     }
 }

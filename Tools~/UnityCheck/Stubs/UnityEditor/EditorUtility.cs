@@ -14,6 +14,9 @@ namespace UnityEditor
         // source: unity:Editor/Mono/EditorUtility.bindings.cs
         public static void ClearProgressBar() => throw null!;
 
+        // source: unity:Editor/Mono/EditorUtility.bindings.cs
+        public static void SetDirty(UnityEngine.Object target) => throw null!;
+
         // source: unity:Editor/Mono/EditorUtility.cs
         public static string SaveFilePanelInProject(string title, string defaultName, string extension, string message) => throw null!;
     }

@@ -6,5 +6,7 @@ namespace UnityEditor
     public partial class Undo
     {
         public static void RegisterCreatedObjectUndo(Object objectToUndo, string name) => throw null!;
+
+        public static void RecordObject(Object objectToUndo, string name) => throw null!;
     }
 }

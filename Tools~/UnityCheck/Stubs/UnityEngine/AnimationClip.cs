@@ -3,6 +3,12 @@ namespace UnityEngine
     // source: unity:Modules/Animation/ScriptBindings/AnimationClip.bindings.cs
     public sealed partial class AnimationClip : Motion
     {
+        public AnimationClip() => throw null!;
+
+        public float length => throw null!;
+
+        public float frameRate { get => throw null!; set => throw null!; }
+
         public void SampleAnimation(GameObject go, float time) => throw null!;
     }
 }

@@ -8,5 +8,7 @@ namespace UnityEngine
         public GameObject gameObject => throw null!;
 
         public T GetComponent<T>() => throw null!;
+
+        public T[] GetComponentsInChildren<T>(bool includeInactive) => throw null!;
     }
 }

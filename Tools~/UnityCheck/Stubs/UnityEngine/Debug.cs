@@ -3,6 +3,8 @@ namespace UnityEngine
     // source: unity:Runtime/Export/Debug/Debug.bindings.cs
     public partial class Debug
     {
+        public static void Log(object message) => throw null!;
+
         public static void LogError(object message, Object context) => throw null!;
     }
 }

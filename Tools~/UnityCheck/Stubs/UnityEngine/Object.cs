@@ -1,4 +1,3 @@
-// Runtime/Unity's use of UnityEngine.Object; other assemblies' members go in their own partial files.
 namespace UnityEngine
 {
     // source: unity:Runtime/Export/Scripting/UnityEngineObject.bindings.cs

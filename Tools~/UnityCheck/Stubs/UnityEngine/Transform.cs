@@ -10,5 +10,7 @@ namespace UnityEngine
         public int childCount => throw null!;
 
         public Transform GetChild(int index) => throw null!;
+
+        public Transform Find(string n) => throw null!;
     }
 }

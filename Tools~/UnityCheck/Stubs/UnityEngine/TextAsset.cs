@@ -4,5 +4,7 @@ namespace UnityEngine
     public partial class TextAsset : Object
     {
         public TextAsset(string text) => throw null!;
+
+        public string text => throw null!;
     }
 }

@@ -1,8 +1,0 @@
-namespace UnityEngine
-{
-    // source: unity:Runtime/Export/Debug/Debug.bindings.cs
-    public partial class Debug
-    {
-        public static void Log(object message) => throw null!;
-    }
-}

@@ -1,7 +1,0 @@
-namespace UnityEngine
-{
-    // source: unity:Modules/Animation/ScriptBindings/Motion.bindings.cs
-    public partial class Motion : Object
-    {
-    }
-}

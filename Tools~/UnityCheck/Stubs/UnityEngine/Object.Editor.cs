@@ -1,8 +1,0 @@
-namespace UnityEngine
-{
-    // source: unity:Runtime/Export/Scripting/UnityEngineObject.bindings.cs
-    public partial class Object
-    {
-        public string name { get => throw null!; set => throw null!; }
-    }
-}

@@ -1,7 +1,0 @@
-namespace UnityEngine
-{
-    // source: unity:Runtime/Export/Scripting/ScriptableObject.bindings.cs
-    public partial class ScriptableObject : Object
-    {
-    }
-}
