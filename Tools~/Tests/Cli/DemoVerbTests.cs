@@ -139,6 +139,24 @@ namespace DeltaInterpolator.Tests.Cli
             }
         }
 
+        [Test]
+        public void BakePreviewIsWrittenAndItsOutputsAreCheckedBeforeAnyWork()
+        {
+            string output = Path.Combine(_dir, "jumps.bvh");
+            string html = Path.Combine(_dir, "jumps.html");
+            string png = Path.Combine(_dir, "jumps.png");
+            File.WriteAllText(html, "mine");
+            CliRun refused = CliHarness.Run("bake", Sample, "--every", "60", "--out", output, "--preview", html, "--png", png);
+            CliHarness.AssertOneErrorLine(refused, "already exists");
+            Assert.That(File.Exists(output), Is.False, "nothing is written when an output is refused");
+            Assert.That(File.ReadAllText(html), Is.EqualTo("mine"));
+
+            CliRun run = CliHarness.Run("bake", Sample, "--every", "60", "--out", output, "--preview", html, "--png", png, "--force");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+            Assert.That(File.ReadAllText(html), Does.StartWith("<!DOCTYPE html").IgnoreCase);
+            Assert.That(File.Exists(png) || File.Exists(ContactSheet.OutputPathFor(png)), Is.True, "a PNG, or an SVG without Chromium");
+        }
+
         private static void AssertKeysExact(MotionClip input, MotionClip baked, int[] keys)
         {
             int j = input.Skeleton.JointCount;
