@@ -157,7 +157,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 keys[i] = (int)Math.Round((inputKeys[i] - inputKeys[0]) * inputFrameTime / _modelFrameTime, MidpointRounding.AwayFromZero);
                 if (i > 0 && keys[i] <= keys[i - 1])
                 {
-                    int apart = (int)Math.Ceiling(_modelFrameTime / inputFrameTime - 1e-9);
+                    // BVH files round their frame time (CMU: 0.008333 s), so 4.0002 input frames per model frame means 4.
+                    int apart = (int)Math.Ceiling(_modelFrameTime / inputFrameTime - 1e-3);
                     throw new CliErrors.UsageException(string.Format(CultureInfo.InvariantCulture,
                         "{0}: keys {1} and {2} fall on the same frame at the model's {3:0.##} fps; expected keys at least {4} frames apart",
                         _inputPath, inputKeys[i - 1], inputKeys[i], 1 / _modelFrameTime, apart));
