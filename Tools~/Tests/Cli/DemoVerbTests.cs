@@ -113,6 +113,16 @@ namespace DeltaInterpolator.Tests.Cli
         }
 
         [Test]
+        public void BakeOfACmuClipRefusesKeysThatFallOnOneModelFrame()
+        {
+            string output = Path.Combine(_dir, "out.bvh");
+            // 120 fps input, 30 fps model: frames 0 and 1 are a quarter of a model frame apart.
+            CliRun run = CliHarness.Run("bake", Sample, "--keys", "0,1,60", "--out", output);
+            CliHarness.AssertOneErrorLine(run, "at least 4 frames apart");
+            Assert.That(File.Exists(output), Is.False);
+        }
+
+        [Test]
         public void BakeOfACmuClipKeepsItsKeyFramesExactlyAndScoresBothMethods()
         {
             const int every = 40;
