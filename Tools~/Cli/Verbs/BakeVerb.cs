@@ -127,7 +127,10 @@ namespace DeltaInterpolator.Cli.Verbs
                 "non-key frames: mean global joint position error (file units), L2Q, and L2P with the official statistics for\n" +
                 "LaFAN1-skeleton files. Gaps outside the model's trained lengths are baked with a warning; a gap its graph cannot\n" +
                 "take is refused.\n" +
-                "Example:\n" +
+                "Any humanoid BVH: one on the model's skeleton at its rate is baked as is; any other (e.g. CMU at 120 fps) is\n" +
+                "retargeted onto the model's skeleton and rate (as 'retarget' does), baked there, and mapped back onto its own\n" +
+                "skeleton and rate, its key frames kept exactly. --preview writes an HTML player of ground truth, SLERP and model.\n" +
+                "Examples:\n" +
                 "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n" +
                 "  inbetween bake Samples~/Demo/cmu_01_01_jumps_turn.bvh --every 40 --out out/jumps-every40.bvh --preview out/jumps.html --png out/jumps.png --force");
             command.Arguments.Add(_input);
