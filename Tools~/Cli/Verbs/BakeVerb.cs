@@ -415,11 +415,16 @@ namespace DeltaInterpolator.Cli.Verbs
                 motion.FrameCount, 1.0 / motion.FrameTime, keys.Length, KeySummary(keys), plan.FrameCount < motion.FrameCount ? $"; output frames {keys[0]}..{keys[keys.Length - 1]}" : "",
                 plan.Gaps.Count, settings.PastFrames, policy, trained, seam.Description,
                 settings.FilledFramesAsContext ? "keys and filled frames" : "key frames only")));
+            if (seam is SkeletonRetargeting retargeted) AnsiConsole.MarkupLine(Markup.Escape(KeyLine(retargeted)));
             if (statistics != null) AnsiConsole.MarkupLine(Markup.Escape($"L2P: per-coordinate std of {statistics.Source}, frames where they are in the file (no window normalisation); L2Q: global quaternions, each in the truth's hemisphere"));
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "wrote {0} ({1}); read {2:0.000} s, model load {3:0.000} s, total {4:0.00} s",
                 outPath, method == "model" ? "model" : "SLERP", readSeconds, loadSeconds, totalSeconds)));
         }
+
+        /// <summary>How the retargeted output's key frames relate to the input's (one line).</summary>
+        internal static string KeyLine(SkeletonRetargeting retargeted) => string.Format(CultureInfo.InvariantCulture,
+            "key frames: the input's, copied exactly (mapping them to the model's skeleton and back came within {0:0.###e+0}° of them)", retargeted.KeyRoundTripDegrees);
 
         private static void AddRow(Table table, string name, BakeAccuracy a, double seconds)
         {

@@ -142,6 +142,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 animation.Motion.FrameCount, 1 / animation.Motion.FrameTime, keys.Length, keys[1] - keys[0], ModelFramesBetweenKeys,
                 ModelFramesBetweenKeys / model.Contract.FramesPerSecond, outcome.Seam.Description)));
             AnsiConsole.MarkupLine(Markup.Escape($"Model: {modelPath}; errors between the keys against the original CMU frames (model results mapped back) and against the retargeted clip on the model's skeleton"));
+            if (outcome.Seam is SkeletonRetargeting retargeted) AnsiConsole.MarkupLine(Markup.Escape(BakeVerb.KeyLine(retargeted)));
             foreach (string warning in outcome.ModelPlan.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(warning));
 
             BakeVerb.WritePreview(animation, keys, outcome, htmlPath, pngPath, force);

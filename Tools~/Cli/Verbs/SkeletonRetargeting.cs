@@ -47,7 +47,7 @@ namespace DeltaInterpolator.Cli.Verbs
         /// <summary>The map between the input's skeleton and the model's.</summary>
         public SkeletonMap Map => _map;
 
-        /// <summary>The largest angle (degrees) between a mapped-back key rotation and the input's, before the input's were copied in (round-off: ~1e-10).</summary>
+        /// <summary>The largest angle (degrees) between a mapped-back key rotation and the input's, before the input's were copied in (round-off: ~1e-13 on the CMU demo clip).</summary>
         public double KeyRoundTripDegrees { get; private set; }
 
         /// <summary>Builds the map for <paramref name="input"/> onto <paramref name="contract"/>'s skeleton.</summary>
@@ -199,8 +199,11 @@ namespace DeltaInterpolator.Cli.Verbs
             double worst = 0;
             for (int q = 0; q < a.Length; q += 4)
             {
-                double dot = Math.Abs(a[q] * b[q] + a[q + 1] * b[q + 1] + a[q + 2] * b[q + 2] + a[q + 3] * b[q + 3]);
-                worst = Math.Max(worst, 2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI);
+                double dot = a[q] * b[q] + a[q + 1] * b[q + 1] + a[q + 2] * b[q + 2] + a[q + 3] * b[q + 3];
+                double sign = dot < 0 ? -1 : 1, chord = 0;
+                for (int c = 0; c < 4; c++) chord += (a[q + c] - sign * b[q + c]) * (a[q + c] - sign * b[q + c]);
+                // From the chord, not acos of the dot product: acos cannot resolve angles below ~1e-6° near 1.
+                worst = Math.Max(worst, 4 * Math.Asin(Math.Min(1, Math.Sqrt(chord) / 2)) * 180 / Math.PI);
             }
 
             return worst;
