@@ -19,6 +19,7 @@ namespace DeltaInterpolator.Cli
             new BakeVerb(),
             new BenchmarkVerb(),
             new CheckVerb(),
+            new DemoVerb(),
             new InfoVerb(),
             new RetargetVerb(),
             new PreviewVerb(),

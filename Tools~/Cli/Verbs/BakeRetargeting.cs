@@ -10,17 +10,20 @@ namespace DeltaInterpolator.Cli.Verbs
     /// The seam between the input file and the model's skeleton and frame rate, before and after
     /// <c>bake</c>: <see cref="ToModel"/> turns the input into motion on the model's skeleton at the
     /// model's rate (with the keys mapped onto it), <see cref="FromModel"/> turns the baked motion back
-    /// onto the input's skeleton and rate. Today only <see cref="SameSkeleton"/> exists (input already on
-    /// the model's skeleton at its rate); a retargeting implementation (Core.Retargeting's skeleton map
-    /// plus resampling) slots in here without changing the verb.
+    /// onto the input's skeleton and rate. <see cref="SameSkeleton"/> for input already on the model's skeleton at its
+    /// rate, <see cref="SkeletonRetargeting"/> for any other humanoid (Core.Retargeting's skeleton map
+    /// plus resampling).
     /// </summary>
     internal interface IBakeRetargeting
     {
         /// <summary>One line for the summary, e.g. "input on the model's skeleton (no retargeting)".</summary>
         string Description { get; }
 
-        /// <summary>The input motion on the model's skeleton at the model's frame rate.</summary>
-        MotionClip ToModel(BvhAnimation input);
+        /// <summary>
+        /// The input motion on the model's skeleton at the model's frame rate, <see cref="KeysToModel"/>'s
+        /// frames holding the input's key poses.
+        /// </summary>
+        MotionClip ToModel(BvhAnimation input, int[] inputKeys);
 
         /// <summary>Input frame indices of keys → frame indices of <see cref="ToModel"/>'s clip.</summary>
         int[] KeysToModel(int[] inputKeys);
@@ -62,7 +65,7 @@ namespace DeltaInterpolator.Cli.Verbs
             }
         }
 
-        public MotionClip ToModel(BvhAnimation input) => input.Motion;
+        public MotionClip ToModel(BvhAnimation input, int[] inputKeys) => input.Motion;
 
         public int[] KeysToModel(int[] inputKeys) => inputKeys;
 

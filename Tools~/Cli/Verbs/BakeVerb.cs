@@ -14,6 +14,7 @@ using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.OnnxRuntime;
+using DeltaInterpolator.Preview;
 using Spectre.Console;
 
 namespace DeltaInterpolator.Cli.Verbs
@@ -30,7 +31,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Argument<string> _input = new Argument<string>("IN.bvh")
         {
-            Description = "BVH file on the model's skeleton at its frame rate (LaFAN1, 30 fps); its frames are the keys' source and the ground truth.",
+            Description = "BVH file of a humanoid: on the model's skeleton at its rate (LaFAN1, 30 fps) it is baked as is, any other (e.g. CMU at 120 fps) is retargeted onto the model's skeleton and rate and the results mapped back; its frames are the keys' source and the ground truth.",
         };
 
         private readonly Option<string?> _keys = new Option<string?>("--keys")
@@ -84,6 +85,24 @@ namespace DeltaInterpolator.Cli.Verbs
             Description = "Replace OUT.bvh when it exists.",
         };
 
+        private readonly Option<int?> _referenceFrame = new Option<int?>("--reference-frame")
+        {
+            Description = "For input on another skeleton (retargeted): the input frame that is its reference pose (e.g. 0 for a CMU file's T-pose); default: its default pose (see 'retarget --help').",
+            HelpName = "K",
+        };
+
+        private readonly Option<string?> _preview = new Option<string?>("--preview")
+        {
+            Description = "Also write a self-contained HTML player of ground truth, SLERP and model over the baked frames (input's skeleton).",
+            HelpName = "OUT.html",
+        };
+
+        private readonly Option<string?> _png = new Option<string?>("--png")
+        {
+            Description = "With --preview: also a PNG contact sheet (headless Chromium; without it, an SVG beside it instead).",
+            HelpName = "OUT.png",
+        };
+
         private readonly Option<string?> _stats = new Option<string?>("--stats")
         {
             Description = "Statistics JSON for L2P on LaFAN1-skeleton files. Default: " + DefaultStats + " when present.",
@@ -108,8 +127,12 @@ namespace DeltaInterpolator.Cli.Verbs
                 "non-key frames: mean global joint position error (file units), L2Q, and L2P with the official statistics for\n" +
                 "LaFAN1-skeleton files. Gaps outside the model's trained lengths are baked with a warning; a gap its graph cannot\n" +
                 "take is refused.\n" +
-                "Example:\n" +
-                "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force");
+                "Any humanoid BVH: one on the model's skeleton at its rate is baked as is; any other (e.g. CMU at 120 fps) is\n" +
+                "retargeted onto the model's skeleton and rate (as 'retarget' does), baked there, and mapped back onto its own\n" +
+                "skeleton and rate, its key frames kept exactly. --preview writes an HTML player of ground truth, SLERP and model.\n" +
+                "Examples:\n" +
+                "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n" +
+                "  inbetween bake Samples~/Demo/cmu_01_01_jumps_turn.bvh --every 40 --out out/jumps-every40.bvh --preview out/jumps.html --png out/jumps.png --force");
             command.Arguments.Add(_input);
             command.Options.Add(_keys);
             command.Options.Add(_every);
@@ -119,6 +142,9 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_context);
             command.Options.Add(_out);
             command.Options.Add(_force);
+            command.Options.Add(_referenceFrame);
+            command.Options.Add(_preview);
+            command.Options.Add(_png);
             command.Options.Add(_stats);
             command.Options.Add(_threads);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
@@ -163,6 +189,9 @@ namespace DeltaInterpolator.Cli.Verbs
 
             // Before any work: the output must be writable and must not replace an input.
             string outFull = OutputFile.Check(outPath, force, input, modelPath, statsPath);
+            string? previewPath = parse.GetValue(_preview);
+            string? pngPath = parse.GetValue(_png);
+            CheckPreviewOutputs(previewPath, pngPath, new[] { outFull }, force, input, modelPath, statsPath);
 
             var read = Stopwatch.StartNew();
             BvhAnimation animation = BvhReader.Read(input);
@@ -174,21 +203,49 @@ namespace DeltaInterpolator.Cli.Verbs
             using var model = new Inbetweener(OnnxRuntimeBackend.Load(modelPath, new OnnxRuntimeOptions { IntraOpThreads = threads }));
             double loadSeconds = load.Elapsed.TotalSeconds;
 
-            // ---- Retargeting seam: input skeleton and rate → model skeleton and rate. ----
-            var retargeting = new SameSkeleton(model.Contract, input);
-            retargeting.Check(animation);
-            IBakeRetargeting seam = retargeting;
-            MotionClip source = seam.ToModel(animation);
+            BakeOutcome outcome = BakeBoth(animation, input, inputKeys, model, policy, context == "filled", parse.GetValue(_referenceFrame));
+            MotionClip modelOut = outcome.ModelOut, slerpOut = outcome.SlerpOut;
+            BakePlan modelPlan = outcome.ModelPlan;
+            BenchmarkStatistics? statistics = LoadStatistics(statsPath, statsGiven != null, animation.Skeleton, input);
+
+            MotionClip chosen = method == "model" ? modelOut : slerpOut;
+            var written = new BvhAnimation(chosen, animation.JointChannels, animation.EndSites, outPath);
+            OutputFile.Write(outFull, stream =>
+            {
+                using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
+                BvhWriter.Write(written, writer);
+            });
+
+            double[]? std = statistics?.StandardDeviation;
+            BakeAccuracy modelScore = BakeAccuracy.Measure(animation.Motion, modelOut, inputKeys, std);
+            BakeAccuracy slerpScore = BakeAccuracy.Measure(animation.Motion, slerpOut, inputKeys, std);
+            PrintSummary(input, animation, inputKeys, modelPlan, outcome.ModelSettings, model.Contract, outcome.Seam, outPath, method,
+                modelScore, slerpScore, statistics, outcome.ModelSeconds, outcome.SlerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds);
+            if (previewPath != null)
+            {
+                WritePreview(animation, inputKeys, outcome, previewPath, pngPath, force);
+            }
+
+            return 0;
+        }
+
+        /// <summary>
+        /// Both methods' bakes of <paramref name="animation"/>'s keys: on the model's skeleton and rate, and
+        /// back on the input's. Same-skeleton inputs at the model's rate go straight in; any other humanoid
+        /// is retargeted (<see cref="SkeletonRetargeting"/>). Progress of the model's gaps on stderr.
+        /// </summary>
+        internal static BakeOutcome BakeBoth(BvhAnimation animation, string input, int[] inputKeys, Inbetweener model, ShortContextPolicy? policy, bool filledContext, int? referenceFrame)
+        {
+            IBakeRetargeting seam = ChooseSeam(model.Contract, animation, input, referenceFrame);
+            MotionClip source = seam.ToModel(animation, inputKeys);
             int[] modelKeys = seam.KeysToModel(inputKeys);
 
             BakeSettings modelSettings = BakeSettings.ForModel(model.Contract, policy);
-            modelSettings.FilledFramesAsContext = context == "filled";
+            modelSettings.FilledFramesAsContext = filledContext;
             var modelBaker = new ClipBaker(model, modelSettings);
             var slerpBaker = new ClipBaker(new SlerpBaseline(), BakeSettings.ForBaseline("SLERP"));
             BakePlan modelPlan = Plan(modelBaker, source.FrameCount, modelKeys, input);
             BakePlan slerpPlan = Plan(slerpBaker, source.FrameCount, modelKeys, input);
-
-            BenchmarkStatistics? statistics = LoadStatistics(statsPath, statsGiven != null, animation.Skeleton, input);
 
             MotionClip? modelClip = null, slerpClip = null;
             double modelSeconds = 0, slerpSeconds = 0;
@@ -211,24 +268,82 @@ namespace DeltaInterpolator.Cli.Verbs
                     slerpSeconds = sw.Elapsed.TotalSeconds;
                 });
 
-            // ---- Retargeting seam: model skeleton and rate → input skeleton and rate. ----
+            // Model skeleton and rate → input skeleton and rate.
             MotionClip modelOut = seam.FromModel(modelClip!, animation, inputKeys);
             MotionClip slerpOut = seam.FromModel(slerpClip!, animation, inputKeys);
+            return new BakeOutcome(seam, source, modelKeys, modelPlan, modelSettings, modelClip!, slerpClip!, modelOut, slerpOut, modelSeconds, slerpSeconds);
+        }
 
-            MotionClip chosen = method == "model" ? modelOut : slerpOut;
-            var written = new BvhAnimation(chosen, animation.JointChannels, animation.EndSites, outPath);
-            OutputFile.Write(outFull, stream =>
+        /// <summary>The input as is when it is on the model's skeleton at its rate; otherwise retargeted.</summary>
+        private static IBakeRetargeting ChooseSeam(ModelContract contract, BvhAnimation animation, string input, int? referenceFrame)
+        {
+            bool sameSkeleton;
+            try
             {
-                using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
-                BvhWriter.Write(written, writer);
-            });
+                contract.CheckSkeleton(animation.Skeleton, input);
+                sameSkeleton = true;
+            }
+            catch (ModelContractException)
+            {
+                sameSkeleton = false;
+            }
 
-            double[]? std = statistics?.StandardDeviation;
-            BakeAccuracy modelScore = BakeAccuracy.Measure(animation.Motion, modelOut, inputKeys, std);
-            BakeAccuracy slerpScore = BakeAccuracy.Measure(animation.Motion, slerpOut, inputKeys, std);
-            PrintSummary(input, animation, inputKeys, modelPlan, modelBaker.Settings, model.Contract, seam, outPath, method,
-                modelScore, slerpScore, statistics, modelSeconds, slerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds);
-            return 0;
+            double frameTime = 1.0 / contract.FramesPerSecond;
+            // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the model's rate.
+            if (sameSkeleton && referenceFrame == null && Math.Abs(animation.Motion.FrameTime - frameTime) <= 1e-4 * frameTime)
+            {
+                return new SameSkeleton(contract, input);
+            }
+
+            return SkeletonRetargeting.Create(contract, animation, referenceFrame, input);
+        }
+
+        /// <summary>The HTML player (and contact sheet) of ground truth, SLERP and model over the baked frames, on the input's skeleton.</summary>
+        internal static void WritePreview(BvhAnimation animation, int[] inputKeys, BakeOutcome outcome, string htmlPath, string? pngPath, bool force)
+        {
+            int first = inputKeys[0];
+            MotionClip truth = Excerpt(animation.Motion, first, outcome.ModelOut.FrameCount);
+            var keys = new int[inputKeys.Length];
+            for (int i = 0; i < keys.Length; i++) keys[i] = inputKeys[i] - first;
+            string title = Path.GetFileName(animation.SourceName) + $", frames {first}–{inputKeys[inputKeys.Length - 1]}";
+            PreviewScene scene = PreviewScene.FromClips(title, new[] { ("Ground truth", truth), ("SLERP", outcome.SlerpOut), ("Model", outcome.ModelOut) }, keys, 0);
+            PreviewWriter.WriteHtml(scene, htmlPath);
+            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB): ground truth, SLERP and model, {2} frames, {3} keys", htmlPath, new FileInfo(htmlPath).Length / 1024.0, scene.FrameCount, keys.Length)));
+            if (pngPath == null) return;
+            string? fallback = null;
+            string written = pngPath;
+            AnsiConsole.Status().Start("Rasterising the contact sheet with headless Chromium...", _ => written = ContactSheet.Write(scene, pngPath, force, out fallback));
+            AnsiConsole.MarkupLine(Markup.Escape(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0)));
+        }
+
+        /// <summary>Frames start..start+count-1 of a clip.</summary>
+        internal static MotionClip Excerpt(MotionClip clip, int start, int count)
+        {
+            int j = clip.Skeleton.JointCount;
+            var positions = new double[count * j * 3];
+            var rotations = new double[count * j * 4];
+            Array.Copy(clip.LocalPositions, start * j * 3, positions, 0, positions.Length);
+            Array.Copy(clip.LocalRotations, start * j * 4, rotations, 0, rotations.Length);
+            return new MotionClip(clip.Skeleton, count, clip.FrameTime, positions, rotations);
+        }
+
+        /// <summary>
+        /// Before any work: --preview and --png (the contact sheet's actual path) are writable, not inputs,
+        /// and differ from each other and from --out.
+        /// </summary>
+        internal static void CheckPreviewOutputs(string? previewPath, string? pngPath, string[] otherOutputs, bool force, params string?[] inputs)
+        {
+            if (pngPath != null && previewPath == null) throw new CliErrors.UsageException($"{pngPath}: --png without --preview; expected --preview OUT.html with it");
+            if (previewPath == null) return;
+            var taken = new System.Collections.Generic.List<string>();
+            foreach (string o in otherOutputs) taken.Add(Path.GetFullPath(o));
+            string html = OutputFile.Check(previewPath, force, inputs);
+            if (taken.Contains(Path.GetFullPath(html))) throw new CliErrors.UsageException($"{previewPath}: the same file as another output; expected a different path for --preview");
+            taken.Add(Path.GetFullPath(html));
+            if (pngPath == null) return;
+            string sheet = ContactSheet.OutputPathFor(pngPath);
+            OutputFile.Check(sheet, force, inputs);
+            if (taken.Contains(Path.GetFullPath(sheet))) throw new CliErrors.UsageException($"{pngPath}: the same file as another output; expected a different path for --png");
         }
 
         /// <summary>Gaps filled → one progress bar ("Baking gaps with the model"), updated synchronously.</summary>
@@ -300,11 +415,16 @@ namespace DeltaInterpolator.Cli.Verbs
                 motion.FrameCount, 1.0 / motion.FrameTime, keys.Length, KeySummary(keys), plan.FrameCount < motion.FrameCount ? $"; output frames {keys[0]}..{keys[keys.Length - 1]}" : "",
                 plan.Gaps.Count, settings.PastFrames, policy, trained, seam.Description,
                 settings.FilledFramesAsContext ? "keys and filled frames" : "key frames only")));
+            if (seam is SkeletonRetargeting retargeted) AnsiConsole.MarkupLine(Markup.Escape(KeyLine(retargeted)));
             if (statistics != null) AnsiConsole.MarkupLine(Markup.Escape($"L2P: per-coordinate std of {statistics.Source}, frames where they are in the file (no window normalisation); L2Q: global quaternions, each in the truth's hemisphere"));
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "wrote {0} ({1}); read {2:0.000} s, model load {3:0.000} s, total {4:0.00} s",
                 outPath, method == "model" ? "model" : "SLERP", readSeconds, loadSeconds, totalSeconds)));
         }
+
+        /// <summary>How the retargeted output's key frames relate to the input's (one line).</summary>
+        internal static string KeyLine(SkeletonRetargeting retargeted) => string.Format(CultureInfo.InvariantCulture,
+            "key frames: the input's, copied exactly (mapping them to the model's skeleton and back came within {0:0.###e+0}° of them)", retargeted.KeyRoundTripDegrees);
 
         private static void AddRow(Table table, string name, BakeAccuracy a, double seconds)
         {

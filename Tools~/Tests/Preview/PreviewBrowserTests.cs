@@ -285,7 +285,7 @@ namespace DeltaInterpolator.Tests.Preview
             return differ / (double)n;
         }
 
-        private static List<string> Watch(IPage page, out List<string> requests)
+        internal static List<string> Watch(IPage page, out List<string> requests)
         {
             var problems = new List<string>();
             var seen = new List<string>();
@@ -299,7 +299,7 @@ namespace DeltaInterpolator.Tests.Preview
             return problems;
         }
 
-        private static string RequireChromium()
+        internal static string RequireChromium()
         {
             string? chromium = ContactSheet.FindChromium();
             if (chromium == null)

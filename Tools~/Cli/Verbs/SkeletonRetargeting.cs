@@ -1,0 +1,212 @@
+using System;
+using System.Globalization;
+using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Cli.Verbs
+{
+    /// <summary>
+    /// <c>bake</c> on any humanoid BVH: the input is moved onto the model's skeleton with a
+    /// <see cref="SkeletonMap"/> (source reference: its default pose or a given frame; target: the model's
+    /// T-pose), brought to the model's frame rate, baked there, and mapped back onto the input's skeleton
+    /// and rate.
+    /// </summary>
+    /// <remarks>
+    /// Time: model frame 0 is the first input key. Each input key k maps to the nearest model frame of its
+    /// time, and between two keys time is stretched linearly so that keys land on keys in both directions
+    /// (a key between two model frames moves by at most half a model frame on the model's timeline only;
+    /// on the way back every input frame between keys reads the baked motion at its stretched time).
+    /// Only the input's key frames are read on the way back (unmapped joints are interpolated between
+    /// keys), so the non-key frames stay an honest ground truth. The output's key frames are the input's,
+    /// copied exactly; <see cref="KeyRoundTripDegrees"/> says how far the map's round trip was from them.
+    /// </remarks>
+    internal sealed class SkeletonRetargeting : IBakeRetargeting
+    {
+        private readonly SkeletonMap _map;
+        private readonly double _modelFrameTime;
+        private readonly double _inputFrameTime;
+        private readonly string _inputPath;
+
+        private SkeletonRetargeting(SkeletonMap map, double modelFrameTime, double inputFrameTime, string inputPath, string reference)
+        {
+            _map = map;
+            _inputFrameTime = inputFrameTime;
+            _modelFrameTime = modelFrameTime;
+            _inputPath = inputPath;
+            Description = string.Format(CultureInfo.InvariantCulture,
+                "retargeted with map '{0}' ({1} joints → the model's {2}; reference: {3}; root × {4:0.#####}) at {5:0.##} fps, baked results mapped back onto the input's skeleton and rate",
+                map.Map.Name, map.Source.JointCount, map.Target.JointCount, reference, map.RootScale, 1 / modelFrameTime);
+        }
+
+        /// <inheritdoc />
+        public string Description { get; }
+
+        /// <summary>The map between the input's skeleton and the model's.</summary>
+        public SkeletonMap Map => _map;
+
+        /// <summary>The largest angle (degrees) between a mapped-back key rotation and the input's, before the input's were copied in (round-off: ~1e-13 on the CMU demo clip).</summary>
+        public double KeyRoundTripDegrees { get; private set; }
+
+        /// <summary>Builds the map for <paramref name="input"/> onto <paramref name="contract"/>'s skeleton.</summary>
+        /// <param name="contract">The model's contract (skeleton, frame rate).</param>
+        /// <param name="input">The input file's animation.</param>
+        /// <param name="referenceFrame">The input frame that is its reference pose, or null for <see cref="ReferencePose.Default"/>.</param>
+        /// <param name="inputPath">The input's path, for messages.</param>
+        /// <exception cref="CliErrors.UsageException">Joints missing, or the reference frame is not a frame of the file.</exception>
+        public static SkeletonRetargeting Create(ModelContract contract, BvhAnimation input, int? referenceFrame, string inputPath)
+        {
+            ReferencePose source;
+            if (referenceFrame == null)
+            {
+                source = ReferencePose.Default(input.Skeleton);
+            }
+            else
+            {
+                int count = input.Motion.FrameCount;
+                if (referenceFrame.Value < 0 || referenceFrame.Value >= count)
+                {
+                    throw new CliErrors.UsageException($"{inputPath}: --reference-frame {referenceFrame.Value} is not a frame of the file; expected 0 to {count - 1}");
+                }
+
+                source = ReferencePose.FromFrame(input.Motion, referenceFrame.Value);
+            }
+
+            try
+            {
+                SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), null, inputPath);
+                return new SkeletonRetargeting(map, 1.0 / contract.FramesPerSecond, input.Motion.FrameTime, inputPath,
+                    referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));
+            }
+            catch (JointMapException e)
+            {
+                throw new CliErrors.UsageException(e.Message);
+            }
+        }
+
+        /// <inheritdoc />
+        public int[] KeysToModel(int[] inputKeys) => ModelKeys(inputKeys, _inputFrameTime);
+
+        /// <inheritdoc />
+        public MotionClip ToModel(BvhAnimation input, int[] inputKeys)
+        {
+            MotionClip motion = input.Motion;
+            CheckKeys(inputKeys, motion.FrameCount);
+            int[] modelKeys = ModelKeys(inputKeys, motion.FrameTime);
+            MotionClip onModel = _map.ToTarget(motion);
+            int frames = modelKeys[modelKeys.Length - 1] + 1;
+            int j = _map.Target.JointCount;
+            var positions = new double[frames * j * 3];
+            var rotations = new double[frames * j * 4];
+            for (int m = 0; m < frames; m++)
+            {
+                MotionResampler.Sample(onModel, InputFrameOf(m, inputKeys, modelKeys), positions.AsSpan(m * j * 3, j * 3), rotations.AsSpan(m * j * 4, j * 4));
+            }
+
+            Quaternions.FixContinuity(rotations, frames, j);
+            return new MotionClip(_map.Target, frames, _modelFrameTime, positions, rotations);
+        }
+
+        /// <inheritdoc />
+        public MotionClip FromModel(MotionClip baked, BvhAnimation input, int[] inputKeys)
+        {
+            MotionClip source = input.Motion;
+            int[] modelKeys = ModelKeys(inputKeys, source.FrameTime);
+            int first = inputKeys[0], count = inputKeys[inputKeys.Length - 1] - first + 1;
+            int js = _map.Source.JointCount, jt = _map.Target.JointCount;
+            var positions = new double[count * js * 3];
+            var rotations = new double[count * js * 4];
+            var targetPositions = new double[jt * 3];
+            var targetRotations = new double[jt * 4];
+            double worst = 0;
+            int segment = 0;
+            for (int i = 0; i < count; i++)
+            {
+                int frame = first + i;
+                while (segment < inputKeys.Length - 2 && frame > inputKeys[segment + 1]) segment++;
+                int k0 = inputKeys[segment], k1 = inputKeys[segment + 1];
+                double t = (frame - k0) / (double)(k1 - k0);
+                Span<double> lp = positions.AsSpan(i * js * 3, js * 3);
+                Span<double> lr = rotations.AsSpan(i * js * 4, js * 4);
+                // Unmapped values from the keys around the frame only: the other input frames are the ground truth.
+                MotionResampler.Blend(source, k0, k1, t, lp, lr);
+                double modelFrame = modelKeys[segment] + t * (modelKeys[segment + 1] - modelKeys[segment]);
+                MotionResampler.Sample(baked, modelFrame, targetPositions, targetRotations);
+                _map.ToSourceFrame(Vector3D.Read(targetPositions, 0), targetRotations, lp, lr);
+                if (frame == k0 || frame == k1)
+                {
+                    worst = Math.Max(worst, MaxAngle(lr, source.LocalRotations.AsSpan(source.RotationIndex(frame, 0), js * 4)));
+                    // The output keeps the input's key frames exactly (what a user keyed is never moved).
+                    source.LocalPositions.AsSpan(source.PositionIndex(frame, 0), js * 3).CopyTo(lp);
+                    source.LocalRotations.AsSpan(source.RotationIndex(frame, 0), js * 4).CopyTo(lr);
+                }
+            }
+
+            KeyRoundTripDegrees = worst;
+            return new MotionClip(_map.Source, count, source.FrameTime, positions, rotations);
+        }
+
+        /// <summary>Input key frames → model frames: nearest model frame of each key's time after the first key.</summary>
+        private int[] ModelKeys(int[] inputKeys, double inputFrameTime)
+        {
+            var keys = new int[inputKeys.Length];
+            for (int i = 0; i < inputKeys.Length; i++)
+            {
+                keys[i] = (int)Math.Round((inputKeys[i] - inputKeys[0]) * inputFrameTime / _modelFrameTime, MidpointRounding.AwayFromZero);
+                if (i > 0 && keys[i] <= keys[i - 1])
+                {
+                    // BVH files round their frame time (CMU: 0.008333 s), so 4.0002 input frames per model frame means 4.
+                    int apart = (int)Math.Ceiling(_modelFrameTime / inputFrameTime - 1e-3);
+                    throw new CliErrors.UsageException(string.Format(CultureInfo.InvariantCulture,
+                        "{0}: keys {1} and {2} fall on the same frame at the model's {3:0.##} fps; expected keys at least {4} frames apart",
+                        _inputPath, inputKeys[i - 1], inputKeys[i], 1 / _modelFrameTime, apart));
+                }
+            }
+
+            return keys;
+        }
+
+        private void CheckKeys(int[] keys, int frameCount)
+        {
+            if (keys.Length < 2) throw new CliErrors.UsageException($"{_inputPath}: {keys.Length} key; expected at least two keys");
+            for (int i = 0; i < keys.Length; i++)
+            {
+                if (keys[i] < 0 || keys[i] >= frameCount)
+                {
+                    throw new CliErrors.UsageException($"{_inputPath}: key frame {keys[i]} is outside the file's frames 0..{frameCount - 1}; expected key frames inside them");
+                }
+
+                if (i > 0 && keys[i] <= keys[i - 1])
+                {
+                    throw new CliErrors.UsageException($"{_inputPath}: key {keys[i]} after {keys[i - 1]}; expected strictly increasing key frames");
+                }
+            }
+        }
+
+        /// <summary>Model frame m → fractional input frame: linear between the keys around it, so keys meet keys.</summary>
+        private static double InputFrameOf(int m, int[] inputKeys, int[] modelKeys)
+        {
+            int s = 0;
+            while (s < modelKeys.Length - 2 && m > modelKeys[s + 1]) s++;
+            double t = (m - modelKeys[s]) / (double)(modelKeys[s + 1] - modelKeys[s]);
+            return inputKeys[s] + t * (inputKeys[s + 1] - inputKeys[s]);
+        }
+
+        private static double MaxAngle(ReadOnlySpan<double> a, ReadOnlySpan<double> b)
+        {
+            double worst = 0;
+            for (int q = 0; q < a.Length; q += 4)
+            {
+                double dot = a[q] * b[q] + a[q + 1] * b[q + 1] + a[q + 2] * b[q + 2] + a[q + 3] * b[q + 3];
+                double sign = dot < 0 ? -1 : 1, chord = 0;
+                for (int c = 0; c < 4; c++) chord += (a[q + c] - sign * b[q + c]) * (a[q + c] - sign * b[q + c]);
+                // From the chord, not acos of the dot product: acos cannot resolve angles below ~1e-6° near 1.
+                worst = Math.Max(worst, 4 * Math.Asin(Math.Min(1, Math.Sqrt(chord) / 2)) * 180 / Math.PI);
+            }
+
+            return worst;
+        }
+    }
+}
