@@ -61,6 +61,8 @@ def _train(sub) -> None:
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--min-past", type=int, default=10,
                    help="train over past-key counts P from this to 10 (default 10: the benchmark's layout only)")
+    p.add_argument("--uniform-past", action="store_true",
+                   help="with --min-past < 10: every past-key count equally often (instead of --longest-past-share)")
     p.add_argument("--longest-past-share", type=float, default=0.4,
                    help="with --min-past < 10: share of batches with P = 10; half the rest has P = min-past, "
                         "the rest spread between (default 0.4)")
@@ -242,7 +244,8 @@ def main(argv: Optional[List[str]] = None) -> int:
                               mirror=args.mirror, random_yaw=args.random_yaw,
                               checkpoint_every=args.checkpoint_every, validate_every=args.validate_every,
                               max_minutes=args.max_minutes, threads=args.threads, min_past=args.min_past,
-                              longest_past_share=args.longest_past_share, init_from=args.init_from)
+                              longest_past_share=args.longest_past_share, uniform_past=args.uniform_past,
+                              init_from=args.init_from)
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0

@@ -33,13 +33,16 @@ class KeyLayoutSampler:
         raise NotImplementedError
 
 
-def past_probabilities(min_past: int, max_past: int, longest_share: float) -> np.ndarray:
+def past_probabilities(min_past: int, max_past: int, longest_share: float, uniform: bool = False) -> np.ndarray:
     """p(P) on [min_past, max_past]: `longest_share` on P = max_past (the game's full history and the
     benchmark), `(1 - longest_share) / 2` on P = 1 (a clip's first gap when baking keys), the rest spread
-    evenly over the lengths between. With min_past == max_past it is that one length."""
+    evenly over the lengths between; or, with `uniform`, the same for every length. With min_past ==
+    max_past it is that one length."""
     count = max_past - min_past + 1
     if count == 1:
         return np.ones(1)
+    if uniform:
+        return np.full(count, 1.0 / count)
     if not 0.0 < longest_share < 1.0:
         raise ValueError(f"the longest past's share must be in (0, 1), got {longest_share}")
     p = np.zeros(count)
@@ -57,13 +60,13 @@ class TransitionSampler(KeyLayoutSampler):
     [min_past, past] by `past_probabilities` (P = `past` always when min_past is not given)."""
 
     def __init__(self, past: int = 10, min_gap: int = 5, max_gap: int = 39, inverse_weighting: bool = True,
-                 min_past: int | None = None, longest_past_share: float = 0.4):
+                 min_past: int | None = None, longest_past_share: float = 0.4, uniform_past: bool = False):
         min_past = past if min_past is None else min_past
         if not 1 <= min_past <= past or not 1 <= min_gap <= max_gap:
             raise ValueError("need 1 ≤ min_past ≤ past and 1 ≤ min_gap ≤ max_gap")
         self.past = past
         self.pasts = np.arange(min_past, past + 1)
-        self.past_probabilities = past_probabilities(min_past, past, longest_past_share)
+        self.past_probabilities = past_probabilities(min_past, past, longest_past_share, uniform_past)
         self.gaps = np.arange(min_gap, max_gap + 1)
         w = 1.0 / self.gaps if inverse_weighting else np.ones(len(self.gaps))
         self.probabilities = w / w.sum()

@@ -48,6 +48,7 @@ class TrainConfig:
     threads: int = 0            # 0 = leave torch's default
     min_past: int = 10          # past keys P drawn on [min_past, 10] (sampler.past_probabilities)
     longest_past_share: float = 0.4
+    uniform_past: bool = False  # p(P) uniform on [min_past, 10] instead of weighted to P = 10 and P = 1
     init_from: str = ""         # start from these weights (an exported .onnx or a checkpoint.pt), not random
 
 
@@ -157,7 +158,8 @@ def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
 RESUME_SETTINGS = {"batch_size": "--batch-size", "peak_lr": "--lr", "warmup_steps": "--warmup",
                    "decay_at": "--decay-at", "reconstruction_scale": "--reconstruction-scale", "seed": "--seed",
                    "unit_scale": "unit_scale", "mirror": "--mirror", "random_yaw": "--random-yaw",
-                   "min_past": "--min-past", "longest_past_share": "--longest-past-share"}
+                   "min_past": "--min-past", "longest_past_share": "--longest-past-share",
+                   "uniform_past": "--uniform-past"}
 
 
 def run_checkpoint(out: Path) -> Optional[Path]:
@@ -303,7 +305,8 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     if world > 1:
         from torch.nn.parallel import DistributedDataParallel
         net = DistributedDataParallel(model, device_ids=[device.index] if device.type == "cuda" else None)
-    sampler = TransitionSampler(min_past=cfg.min_past, longest_past_share=cfg.longest_past_share)
+    sampler = TransitionSampler(min_past=cfg.min_past, longest_past_share=cfg.longest_past_share,
+                                uniform_past=cfg.uniform_past)
     source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device)
 
     log_path = out / "log.csv"

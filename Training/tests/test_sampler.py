@@ -68,3 +68,12 @@ def test_past_range_is_checked():
         TransitionSampler(past=10, min_past=0)
     with pytest.raises(ValueError):
         TransitionSampler(past=5, min_past=6)
+
+
+def test_uniform_past_lengths():
+    sampler = TransitionSampler(min_past=1, uniform_past=True)
+    assert np.allclose(sampler.past_probabilities, 0.1)
+    rng = np.random.default_rng(2)
+    pasts = np.array([sampler.sample(rng).past for _ in range(5000)])
+    for p in range(1, 11):
+        assert (pasts == p).mean() == pytest.approx(0.1, abs=0.02)
