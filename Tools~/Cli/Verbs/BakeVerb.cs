@@ -80,10 +80,7 @@ namespace DeltaInterpolator.Cli.Verbs
             Required = true,
         };
 
-        private readonly Option<bool> _force = new Option<bool>("--force")
-        {
-            Description = "Replace OUT.bvh when it exists.",
-        };
+        private readonly OutputOptions _output = new OutputOptions();
 
         private readonly Option<int?> _referenceFrame = new Option<int?>("--reference-frame")
         {
@@ -141,7 +138,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_pastPolicy);
             command.Options.Add(_context);
             command.Options.Add(_out);
-            command.Options.Add(_force);
+            _output.AddTo(command);
             command.Options.Add(_referenceFrame);
             command.Options.Add(_preview);
             command.Options.Add(_png);
@@ -159,7 +156,7 @@ namespace DeltaInterpolator.Cli.Verbs
             int? every = parse.GetValue(_every);
             string method = parse.GetValue(_method)!;
             string outPath = parse.GetValue(_out)!;
-            bool force = parse.GetValue(_force);
+            bool force = parse.GetValue(_output.Force);
             int threads = parse.GetValue(_threads);
             ShortContextPolicy? policy = ParsePolicy(parse.GetValue(_pastPolicy)!);
 

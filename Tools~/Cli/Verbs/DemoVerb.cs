@@ -50,10 +50,7 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "FILE.onnx",
         };
 
-        private readonly Option<bool> _force = new Option<bool>("--force")
-        {
-            Description = "Write into an existing non-empty --out folder, replacing the demo's files there.",
-        };
+        private readonly OutputOptions _output = new OutputOptions();
 
         /// <inheritdoc />
         public Command CreateCommand()
@@ -71,7 +68,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "  inbetween demo --out out/demo --force");
             command.Options.Add(_out);
             command.Options.Add(_model);
-            command.Options.Add(_force);
+            _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -79,7 +76,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private int Run(ParseResult parse)
         {
             var total = Stopwatch.StartNew();
-            bool force = parse.GetValue(_force);
+            bool force = parse.GetValue(_output.Force);
             string? root = FindRoot();
             if (root == null)
             {

@@ -39,10 +39,7 @@ namespace DeltaInterpolator.Cli.Verbs
             Description = "Path of the .unitypackage instead of --out/NAME-VERSION.unitypackage.",
         };
 
-        private readonly Option<bool> _force = new Option<bool>("--force")
-        {
-            Description = "Replace archives that already exist.",
-        };
+        private readonly OutputOptions _output = new OutputOptions();
 
         /// <inheritdoc />
         public Command CreateCommand()
@@ -58,7 +55,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_out);
             command.Options.Add(_tgz);
             command.Options.Add(_unityPackage);
-            command.Options.Add(_force);
+            _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -66,7 +63,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private int Run(ParseResult parse)
         {
             string root = parse.GetValue(_root)!;
-            bool force = parse.GetValue(_force);
+            bool force = parse.GetValue(_output.Force);
             if (!Directory.Exists(root))
             {
                 throw new CliErrors.UsageException($"{root}: no such folder; expected the package root (the folder with package.json)");

@@ -64,10 +64,7 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "OUT.png",
         };
 
-        private readonly Option<bool> _force = new Option<bool>("--force")
-        {
-            Description = "Replace output files that already exist.",
-        };
+        private readonly OutputOptions _output = new OutputOptions();
 
         /// <inheritdoc />
         public Command CreateCommand()
@@ -88,7 +85,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_frames);
             command.Options.Add(_out);
             command.Options.Add(_png);
-            command.Options.Add(_force);
+            _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -134,7 +131,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
             (int Start, int End)? range = ParseFrames(parse.GetValue(_frames));
             int[] keys = ParseKeys(parse.GetValue(_keys));
-            bool force = parse.GetValue(_force);
+            bool force = parse.GetValue(_output.Force);
             string[] inputs = requests.Select(r => r.Path).ToArray();
             string htmlPath = parse.GetValue(_out)!;
             OutputFile.Check(htmlPath, force, inputs);

@@ -83,10 +83,7 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "FILE.onnx",
         };
 
-        private readonly Option<bool> _force = new Option<bool>("--force")
-        {
-            Description = "Replace OUT.bvh if it exists",
-        };
+        private readonly OutputOptions _output = new OutputOptions();
 
         /// <inheritdoc />
         public Command CreateCommand()
@@ -107,7 +104,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_fps);
             command.Options.Add(_scale);
             command.Options.Add(_model);
-            command.Options.Add(_force);
+            _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
         }
@@ -137,7 +134,7 @@ namespace DeltaInterpolator.Cli.Verbs
             if (!toModel) RequireFile(to, "'model' or a BVH file whose skeleton receives the motion");
             if (mapPath != null) RequireFile(mapPath, "a JSON joint map");
             RequireFile(modelPath, "the model file whose skeleton is the target (--model)");
-            OutputFile.Check(output, parse.GetValue(_force), input, toModel ? null : to, mapPath, modelPath);
+            OutputFile.Check(output, parse.GetValue(_output.Force), input, toModel ? null : to, mapPath, modelPath);
 
             BvhAnimation source = BvhReader.Read(input);
             ModelContract contract = ReadContract(modelPath);
