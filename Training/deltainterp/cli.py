@@ -16,15 +16,93 @@ DEFAULT_PACK = "Training/.data/lafan1-train.npz"
 
 
 def _prepare(sub) -> None:
-    p = sub.add_parser("prepare", help="read the LaFAN1 training BVH files once and pack them into one .npz",
-                       description="Reads every training-subject BVH (subjects 1-4) in --data, applies the "
-                                   "quaternion continuity fix per file, and writes one compact .npz that "
-                                   "`train` reads (and that can travel to a remote GPU machine).")
-    p.add_argument("--data", default=DEFAULT_DATA, help=f"folder of LaFAN1 .bvh files (default {DEFAULT_DATA})")
+    p = sub.add_parser("prepare", help="retarget BVH folders of any humanoid onto the model's skeleton and pack them",
+                       formatter_class=argparse.RawDescriptionHelpFormatter,
+                       description="Reads every BVH file in the --data folders (recursively), moves each onto the "
+                                   "model's skeleton and frame rate\nwith `inbetween retarget` (the C# tool: one "
+                                   "implementation of joint maps, synthesized joints, root scale\nand resampling), "
+                                   "and writes one compact .npz that `train` reads. Per-file facts (true frame "
+                                   "rate,\nframes to drop, reference frame, joint map) come from a manifest "
+                                   "(inbetween-data.json in the folder,\nor a NAME.json given to --data; format in "
+                                   "deltainterp/datasets.py and Training/README.md) or from\nthe options below.\n\n"
+                                   "A single LaFAN1 folder (<theme><take>_subject<k>.bvh beside train_stats_official.json, "
+                                   "no manifest,\nno --holdout) is packed as before: subjects 1-4, the statistics "
+                                   "file's offsets.\n\nExample (the shipped CMU model's data, subjects 02, 09, 13 and 38 "
+                                   "held out):\n  PYTHONPATH=Training python3 -m deltainterp prepare --data "
+                                   "Training/datasets/cmu.json Training/datasets/cmu-more.json \\\n"
+                                   "      --holdout '02_*' '09_*' '13_*' '38_*' --out Training/.data/cmu-train.npz")
+    p.add_argument("--data", nargs="+", default=[DEFAULT_DATA],
+                   help=f"folders of .bvh files or data manifests (default {DEFAULT_DATA})")
     p.add_argument("--stats", default=DEFAULT_STATS,
-                   help="official statistics JSON; its bone offsets become the model's skeleton offsets")
+                   help="LaFAN1 only: official statistics JSON; its bone offsets become the model's skeleton offsets")
     p.add_argument("--out", default=DEFAULT_PACK, help=f"output .npz (default {DEFAULT_PACK})")
+    p.add_argument("--holdout", nargs="*", default=[], metavar="GLOB",
+                   help="leave out files whose name or path (relative to their folder) matches, e.g. '02_*' "
+                        "(held-out subjects: never trained on, never used to choose anything)")
+    p.add_argument("--from-frame", type=int, help="drop the frames before K in every file (manifest default)")
+    p.add_argument("--reference-frame", type=int, help="the frame whose pose is the reference (manifest default)")
+    p.add_argument("--input-fps", type=float, help="every file's true frame rate (manifest default)")
+    p.add_argument("--map", help="a JSON joint map for every file (manifest default; the format `inbetween retarget --map` reads)")
+    p.add_argument("--time-scales", default="",
+                   help="augment with time-scaled copies, e.g. 0.8,1.25 (1.25 = played 25%% slower); trained on, never validated on")
+    p.add_argument("--model", help="the .onnx whose skeleton and frame rate are the target (default: the tool's)")
+    p.add_argument("--jobs", type=int, default=2, help="retargeting processes at once (default 2)")
+    p.add_argument("--cache", default="Training/.data/retargeted",
+                   help="folder for retargeted files, reused by later runs (default Training/.data/retargeted)")
     p.add_argument("--force", action="store_true", help="replace an existing --out file")
+
+
+def _is_lafan1_folder(args) -> bool:
+    if len(args.data) != 1 or args.holdout or any(getattr(args, k) is not None for k in
+                                                  ("from_frame", "reference_frame", "input_fps", "map")):
+        return False
+    folder = Path(args.data[0])
+    if not folder.is_dir() or (folder / "inbetween-data.json").exists():
+        return False
+    import re
+    names = [f.name for f in folder.glob("*.bvh")]
+    return bool(names) and all(re.fullmatch(r"[A-Za-z]+\d*_subject\d+\.bvh", n) for n in names)
+
+
+def _run_prepare(args) -> int:
+    if _is_lafan1_folder(args):
+        from .data import prepare
+        safe_output.check(args.out, args.force, [args.stats])  # before reading any BVH
+        pack = prepare(args.data[0], args.out, args.stats)
+        print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
+              f"{pack.skeleton.joint_count} joints")
+        return 0
+    from .datasets import open_source, plan_files, prepare_any
+    scales = []
+    for v in [t for t in args.time_scales.split(",") if t.strip()]:
+        try:
+            scales.append(float(v))
+        except ValueError:
+            raise ValueError(f"--time-scales: {v!r} is not a number; expected e.g. 0.8,1.25") from None
+        if not (0.25 <= scales[-1] <= 4):
+            raise ValueError(f"--time-scales: {v}; expected factors from 0.25 to 4")
+    if args.jobs < 1 or args.jobs > 64:
+        raise ValueError(f"--jobs {args.jobs}; expected 1 to 64")
+    options = {"from_frame": args.from_frame, "reference_frame": args.reference_frame, "fps": args.input_fps,
+               "map": args.map}
+    inputs = [d for d in args.data if Path(d).is_file()] + ([args.map] if args.map else [])
+    for source in [open_source(d) for d in args.data]:  # the output must not be one of the BVH inputs
+        inputs += [str(p.path) for p in plan_files(source, options, args.holdout, [])]
+    safe_output.check(args.out, args.force, inputs)
+    pack, plans, sources = prepare_any(args.data, args.out, args.holdout, options, scales, args.cache,
+                                       args.model, args.jobs)
+    originals = [p for p in plans if p.time_scale == 1.0]
+    seconds = sum(int(pack.starts[i + 1] - pack.starts[i]) for i in range(len(pack.files))
+                  if not pack.is_augmented(i)) * pack.frame_time
+    for s in sources:
+        n = sum(1 for p in originals if p.folder == str(s.folder))
+        print(f"  {s.folder}: {n} files" + (f" (manifest {s.manifest})" if s.manifest else ""))
+    if args.holdout:
+        print(f"  held out: files matching {' '.join(args.holdout)}")
+    print(f"wrote {args.out}: {len(originals)} files ({seconds / 60:.1f} min at {1 / pack.frame_time:.0f} fps)"
+          + (f" + {len(plans) - len(originals)} time-scaled copies" if len(plans) > len(originals) else "")
+          + f", {len(pack.root_positions)} frames, {pack.skeleton.joint_count} joints")
+    return 0
 
 
 def _train(sub) -> None:
@@ -225,12 +303,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         if args.verb == "prepare":
-            from .data import prepare
-            safe_output.check(args.out, args.force, [args.stats])  # before reading any BVH
-            pack = prepare(args.data, args.out, args.stats)
-            print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
-                  f"{pack.skeleton.joint_count} joints")
-            return 0
+            return _run_prepare(args)
         if args.verb == "train":
             from .train import TrainConfig, train
             overrides = {k: getattr(args, k) for k in ("width", "blocks", "heads", "dropout")

@@ -28,6 +28,12 @@ class MotionPack:
     root_positions: np.ndarray  # (frames, 3) float32, data units (cm)
     local_quaternions: np.ndarray  # (frames, J, 4) float32
     frame_time: float
+    # Per file: True for an augmented copy (e.g. a time-scaled one): trained on (its first 90 %, like any
+    # file), never validated on. None (packs written before) means no file is augmented.
+    augmented: Optional[np.ndarray] = None
+
+    def is_augmented(self, i: int) -> bool:
+        return bool(self.augmented is not None and self.augmented[i])
 
     def file_frames(self, i: int) -> Tuple[int, int]:
         return int(self.starts[i]), int(self.starts[i + 1])
@@ -74,7 +80,8 @@ def save_pack(pack: MotionPack, path: str) -> None:
     safe_output.write(path, lambda f: np.savez_compressed(
         f, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files), starts=pack.starts,
         root_positions=pack.root_positions, local_quaternions=pack.local_quaternions,
-        frame_time=pack.frame_time))
+        frame_time=pack.frame_time,
+        augmented=pack.augmented if pack.augmented is not None else np.zeros(len(pack.files), dtype=bool)))
 
 
 PACK_EXPECTED = "expected a pack written by `python3 -m deltainterp prepare`"
@@ -91,7 +98,8 @@ def load_pack(path: str) -> MotionPack:
         with np.load(path, allow_pickle=False) as z:
             pack = MotionPack(Skeleton.from_json(json.loads(str(z["skeleton"]))), [str(f) for f in z["files"]],
                               np.asarray(z["starts"]), np.asarray(z["root_positions"]),
-                              np.asarray(z["local_quaternions"]), float(z["frame_time"]))
+                              np.asarray(z["local_quaternions"]), float(z["frame_time"]),
+                              np.asarray(z["augmented"], dtype=bool) if "augmented" in z.files else None)
     except Exception as e:  # noqa: BLE001 - a file from anywhere: any failure to read it is the file's
         detail = " ".join(str(e).split())[:160]
         raise ValueError(f"{path}: not a readable pack ({type(e).__name__}: {detail}); {PACK_EXPECTED}") from None
@@ -105,6 +113,8 @@ def load_pack(path: str) -> MotionPack:
         problem = "file start frames that do not cover its frames"
     elif not (np.isfinite(pack.root_positions).all() and np.isfinite(pack.local_quaternions).all()):
         problem = "non-finite motion values"
+    elif pack.augmented is not None and pack.augmented.shape != (len(pack.files),):
+        problem = f"an augmented flag array of shape {pack.augmented.shape} for {len(pack.files)} files"
     elif not (np.isfinite(pack.frame_time) and pack.frame_time > 0):
         problem = f"frame time {pack.frame_time}"
     if problem:
@@ -132,7 +142,8 @@ def split_windows(pack: MotionPack, length: int = 50, offset: int = 20, validati
         a, b = pack.file_frames(i)
         cut = a + int(round((b - a) * (1.0 - validation_fraction)))
         train += [a + s for s in windows(cut - a, length, offset)]
-        val += [cut + s for s in windows(b - cut, validation_length, validation_offset)]
+        if not pack.is_augmented(i):  # a time-scaled copy's tail is the same motion as its original's
+            val += [cut + s for s in windows(b - cut, validation_length, validation_offset)]
     return np.asarray(train, dtype=np.int64), np.asarray(val, dtype=np.int64)
 
 

@@ -17,31 +17,50 @@ namespace DeltaInterpolator.Core.Retargeting
     /// (Mixamo's <c>mixamorig:Hips</c> matches <c>Hips</c>).
     /// Built-in maps target the model's skeleton (LaFAN1's 22 joint names).
     /// </summary>
+    /// <remarks>
+    /// <b>Joints a rig lacks.</b> A target joint mapped to <c>null</c> is <i>synthesized</i>: it becomes a
+    /// rigid child of its parent at the reference pose's offset (<see cref="SkeletonMap"/>). A joint in
+    /// <see cref="MayLack"/> is synthesized when its chain is not found in the source skeleton (the built-in
+    /// maps allow this for toes, the upper chest, the neck and the shoulders; a JSON map for every joint
+    /// it does not name). Every other joint must be found.
+    /// </remarks>
     public sealed class JointMap
     {
-        private readonly Dictionary<string, string[]> _chains;
+        /// <summary>The model joints a built-in map synthesizes when a rig lacks them (toes, upper chest, neck, shoulders).</summary>
+        public static IReadOnlyList<string> OptionalModelJoints { get; } = new[] { "LeftToe", "RightToe", "Spine2", "Neck", "LeftShoulder", "RightShoulder" };
+
+        private readonly Dictionary<string, string[]?> _chains;
+        private readonly HashSet<string> _mayLack;
         private readonly string[] _targets;
 
-        /// <summary>Creates a map from target joint names to source chains (parent first, each non-empty).</summary>
+        /// <summary>Creates a map from target joint names to source chains (parent first, each non-empty; null: synthesize the joint).</summary>
         /// <param name="name">A short name for messages, e.g. <c>cmu</c> or a file path.</param>
-        /// <param name="chains">Target joint name → source joint names, parent first.</param>
-        public JointMap(string name, IEnumerable<KeyValuePair<string, string[]>> chains)
+        /// <param name="chains">Target joint name → source joint names, parent first, or null for a joint the source lacks.</param>
+        /// <param name="mayLack">Target joints synthesized when their chain is not found in a source skeleton.</param>
+        public JointMap(string name, IEnumerable<KeyValuePair<string, string[]?>> chains, IEnumerable<string>? mayLack = null)
         {
             Name = name ?? throw new ArgumentNullException(nameof(name));
             if (chains == null) throw new ArgumentNullException(nameof(chains));
-            _chains = new Dictionary<string, string[]>(StringComparer.Ordinal);
+            _chains = new Dictionary<string, string[]?>(StringComparer.Ordinal);
             var order = new List<string>();
-            foreach (KeyValuePair<string, string[]> kv in chains)
+            foreach (KeyValuePair<string, string[]?> kv in chains)
             {
                 if (string.IsNullOrWhiteSpace(kv.Key)) throw new ArgumentException("a target joint name is empty", nameof(chains));
-                if (kv.Value == null || kv.Value.Length == 0) throw new ArgumentException($"target joint '{kv.Key}' has no source joint", nameof(chains));
+                if (kv.Value != null && kv.Value.Length == 0) throw new ArgumentException($"target joint '{kv.Key}' has no source joint", nameof(chains));
                 if (_chains.ContainsKey(kv.Key)) throw new ArgumentException($"target joint '{kv.Key}' is listed twice", nameof(chains));
-                _chains.Add(kv.Key, (string[])kv.Value.Clone());
+                _chains.Add(kv.Key, kv.Value == null ? null : (string[])kv.Value.Clone());
                 order.Add(kv.Key);
             }
 
             _targets = order.ToArray();
+            _mayLack = new HashSet<string>(mayLack ?? Array.Empty<string>(), StringComparer.Ordinal);
         }
+
+        /// <summary>True when the map says <paramref name="targetJoint"/> has no source joint (null): it is synthesized.</summary>
+        public bool IsSynthesized(string targetJoint) => _chains.TryGetValue(targetJoint, out string[]? chain) && chain == null;
+
+        /// <summary>True when <paramref name="targetJoint"/> is synthesized if a source skeleton lacks its chain (see remarks).</summary>
+        public bool MayLack(string targetJoint) => _mayLack.Contains(targetJoint) || IsSynthesized(targetJoint);
 
         /// <summary>The map's name for messages.</summary>
         public string Name { get; }
@@ -51,6 +70,20 @@ namespace DeltaInterpolator.Core.Retargeting
 
         /// <summary>The source chain (parent first) of <paramref name="targetJoint"/>, or null when the map does not name it.</summary>
         public IReadOnlyList<string>? SourceChain(string targetJoint) => _chains.TryGetValue(targetJoint, out string[]? chain) ? chain : null;
+
+        /// <summary>
+        /// The CMU database in the cgspeed "Daz-friendly" Poser conversion (43 joints, <c>ROOT hip</c>; e.g.
+        /// <c>../shared/data/cmu-more</c>): two spine joints and no toes, so Spine2 and the toes are
+        /// synthesized; the buttock joints between hip and thigh are folded into the thighs.
+        /// </summary>
+        public static JointMap Poser { get; } = Build("poser", new[]
+        {
+            "Hips", "hip", "LeftUpLeg", "lThigh", "LeftLeg", "lShin", "LeftFoot", "lFoot", "LeftToe", null,
+            "RightUpLeg", "rThigh", "RightLeg", "rShin", "RightFoot", "rFoot", "RightToe", null,
+            "Spine", "abdomen", "Spine1", "chest", "Spine2", null, "Neck", "neck", "Head", "head",
+            "LeftShoulder", "lCollar", "LeftArm", "lShldr", "LeftForeArm", "lForeArm", "LeftHand", "lHand",
+            "RightShoulder", "rCollar", "RightArm", "rShldr", "RightForeArm", "rForeArm", "RightHand", "rHand",
+        });
 
         /// <summary>LaFAN1 (and the model) onto itself: every joint by its own name.</summary>
         public static JointMap Lafan1 { get; } = Build("lafan1", new[]
@@ -100,7 +133,14 @@ namespace DeltaInterpolator.Core.Retargeting
         });
 
         /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
-        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid };
+        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid, Poser };
+
+        /// <summary>The built-in map called <paramref name="name"/> (lafan1, cmu, mixamo, unity-humanoid, poser), or null.</summary>
+        public static JointMap? Named(string name)
+        {
+            foreach (JointMap map in BuiltIn) if (string.Equals(map.Name, name, StringComparison.OrdinalIgnoreCase)) return map;
+            return null;
+        }
 
         /// <summary>
         /// The built-in map that finds the most of <paramref name="target"/>'s joints in
@@ -142,12 +182,22 @@ namespace DeltaInterpolator.Core.Retargeting
         {
             JsonValue root = JsonValue.Parse(text, sourceName);
             IReadOnlyDictionary<string, JsonValue> members = root.ExpectObject("the joint map");
-            var chains = new List<KeyValuePair<string, string[]>>();
+            var chains = new List<KeyValuePair<string, string[]?>>();
             var named = new HashSet<string>(StringComparer.Ordinal);
+            var mayLack = new List<string>();
             foreach (KeyValuePair<string, JsonValue> kv in members)
             {
-                string[] chain;
-                if (kv.Value.Kind == JsonKind.String)
+                if (string.IsNullOrWhiteSpace(kv.Key))
+                {
+                    throw new DataFormatException(sourceName, kv.Value.Line, "a target joint name is blank", "expected model joint names as keys");
+                }
+
+                string[]? chain;
+                if (kv.Value.Kind == JsonKind.Null)
+                {
+                    chain = null; // the rig lacks this joint: synthesize it
+                }
+                else if (kv.Value.Kind == JsonKind.String)
                 {
                     chain = new[] { kv.Value.ExpectString(kv.Key) };
                 }
@@ -163,7 +213,7 @@ namespace DeltaInterpolator.Core.Retargeting
                     for (int i = 0; i < chain.Length; i++) chain[i] = items[i].ExpectString($"\"{kv.Key}\"[{i}]");
                 }
 
-                foreach (string s in chain)
+                foreach (string s in chain ?? Array.Empty<string>())
                 {
                     if (string.IsNullOrWhiteSpace(s))
                     {
@@ -171,19 +221,26 @@ namespace DeltaInterpolator.Core.Retargeting
                     }
                 }
 
-                chains.Add(new KeyValuePair<string, string[]>(kv.Key, chain));
-                named.Add(kv.Key);
+                if (!named.Add(kv.Key))
+                {
+                    throw new DataFormatException(sourceName, kv.Value.Line, $"\"{kv.Key}\" is listed twice", "expected each model joint once");
+                }
+
+                chains.Add(new KeyValuePair<string, string[]?>(kv.Key, chain));
             }
 
             if (fallback != null)
             {
                 foreach (string t in fallback.TargetJoints)
                 {
-                    if (!named.Contains(t)) chains.Add(new KeyValuePair<string, string[]>(t, (string[])fallback._chains[t].Clone()));
+                    if (named.Contains(t)) continue;
+                    string[]? chain = fallback._chains[t];
+                    chains.Add(new KeyValuePair<string, string[]?>(t, chain == null ? null : (string[])chain.Clone()));
+                    mayLack.Add(t); // omitted from the file: taken from the built-in names when the rig has them, else synthesized
                 }
             }
 
-            return new JointMap(sourceName, chains);
+            return new JointMap(sourceName, chains, mayLack);
         }
 
         /// <summary>Reads a user map file (see <see cref="FromJson"/>).</summary>
@@ -230,15 +287,15 @@ namespace DeltaInterpolator.Core.Retargeting
             return colon >= 0 ? name.Substring(colon + 1) : name;
         }
 
-        private static JointMap Build(string name, string[] pairs)
+        private static JointMap Build(string name, string?[] pairs)
         {
-            var chains = new List<KeyValuePair<string, string[]>>(pairs.Length / 2);
+            var chains = new List<KeyValuePair<string, string[]?>>(pairs.Length / 2);
             for (int i = 0; i < pairs.Length; i += 2)
             {
-                chains.Add(new KeyValuePair<string, string[]>(pairs[i], pairs[i + 1].Split('|')));
+                chains.Add(new KeyValuePair<string, string[]?>(pairs[i]!, pairs[i + 1]?.Split('|')));
             }
 
-            return new JointMap(name, chains);
+            return new JointMap(name, chains, OptionalModelJoints);
         }
     }
 }

@@ -39,6 +39,10 @@ namespace DeltaInterpolator.Core.Retargeting
     /// 0.056444 m units to LaFAN1's centimetres) and the difference in size, so feet stay on the ground
     /// (Y = 0 in both) and strides keep their proportion to the legs. A caller that knows better (e.g.
     /// both files' units and no size change wanted) passes its own scale to <see cref="Create"/>.</para>
+    /// <para><b>Joints the source lacks.</b> A target joint the map synthesizes (<see cref="JointMap.MayLack"/>)
+    /// follows its parent's source joint: C_j = G_s(p)⁻¹ · G_j, so q_j = C_p⁻¹ · C_j is the aligned reference
+    /// pose's local rotation on every frame (a rigid child at the reference offset), and its children map
+    /// through it as through any joint. <see cref="SynthesizedJoints"/> names them.</para>
     /// <para><b>Frame rate.</b> Both directions keep the frame rate; use <see cref="MotionResampler"/>
     /// to reach the model's rate and back.</para>
     /// </remarks>
@@ -51,9 +55,15 @@ namespace DeltaInterpolator.Core.Retargeting
         private readonly double[] _scratchPositions;
         private readonly double[] _scratchRotations;
 
-        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, double? rootScale)
+        private readonly bool[] _synthesized;     // target joint → true when the source lacks it (rigid child of its parent)
+
+        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, bool[] synthesized, double? rootScale)
         {
             SourceReference = source;
+            _synthesized = synthesized;
+            var made = new List<string>();
+            for (int j = 0; j < synthesized.Length; j++) if (synthesized[j]) made.Add(target.Skeleton.Names[j]);
+            SynthesizedJoints = made;
             Map = map;
             _sourceOf = sourceOf;
             _sourceFirst = sourceFirst;
@@ -101,8 +111,14 @@ namespace DeltaInterpolator.Core.Retargeting
             AlignedBones = aligned;
 
             // 2. Root scale from the leg lengths of the two reference poses.
-            SourceLegLength = LegLength(source, sourceFirst, sourceOf[0]);
-            TargetLegLength = LegLength(TargetReference, Identity(jt), 0);
+            var sourceMeasured = new List<int>();
+            for (int j = 0; j < jt; j++) if (!synthesized[j]) sourceMeasured.Add(sourceFirst[j]);
+            SourceLegLength = LegLength(source, sourceMeasured.ToArray(), sourceOf[0]);
+            // Like with like: the target is measured down to its lowest joint that the source has too (a rig
+            // without toes is measured to the ankles on both sides).
+            var measured = new List<int>();
+            for (int j = 0; j < jt; j++) if (!synthesized[j]) measured.Add(j);
+            TargetLegLength = LegLength(TargetReference, measured.ToArray(), 0);
             if (rootScale == null && (!(SourceLegLength > 0) || !(TargetLegLength > 0)))
             {
                 throw new JointMapException(map.Name, $"the reference poses give leg lengths {SourceLegLength:G4} (source) and {TargetLegLength:G4} (target)",
@@ -117,6 +133,7 @@ namespace DeltaInterpolator.Core.Retargeting
             var inChains = new bool[ss.JointCount];
             for (int j = 0; j < jt; j++)
             {
+                if (synthesized[j]) continue;
                 IReadOnlyList<string> chain = map.SourceChain(ts.Names[j])!;
                 foreach (string n in chain) inChains[JointMap.FindJoint(ss, n)] = true;
             }
@@ -152,6 +169,16 @@ namespace DeltaInterpolator.Core.Retargeting
 
         /// <summary>The target's leg length in its units, measured the same way on its aligned reference pose.</summary>
         public double TargetLegLength { get; }
+
+        /// <summary>
+        /// Target joints the source skeleton lacks (e.g. the toes and Spine2 of a Poser rig), in target order:
+        /// each is a rigid child of its parent at the aligned reference pose's offset, so its local rotation
+        /// is constant; mapping back ignores it. Tools print these names ("made up").
+        /// </summary>
+        public IReadOnlyList<string> SynthesizedJoints { get; }
+
+        /// <summary>True when target joint <paramref name="targetJoint"/> is synthesized (see <see cref="SynthesizedJoints"/>).</summary>
+        public bool IsSynthesized(int targetJoint) => _synthesized[targetJoint];
 
         /// <summary>Source joints outside every chain (they keep the source clip's rotations on the way back).</summary>
         public IReadOnlyList<string> UnmappedSourceJoints { get; }
@@ -189,14 +216,24 @@ namespace DeltaInterpolator.Core.Retargeting
             map ??= JointMap.Detect(ss, ts);
             int jt = ts.JointCount;
             var chains = new int[jt][];
+            var synthesized = new bool[jt];
             var missing = new List<string>();
+            var missingNames = new List<string>();
             for (int j = 0; j < jt; j++)
             {
                 IReadOnlyList<string>? chain = map.SourceChain(ts.Names[j]);
                 int[]? found = chain == null ? null : JointMap.FindChain(ss, chain);
                 if (found == null)
                 {
+                    // A joint the rig lacks: a rigid child of its parent (never the root, never below a missing joint).
+                    if (j > 0 && map.MayLack(ts.Names[j]) && (chains[ts.Parents[j]] != null || synthesized[ts.Parents[j]]))
+                    {
+                        synthesized[j] = true;
+                        continue;
+                    }
+
                     missing.Add(chain == null ? ts.Names[j] : ts.Names[j] + " (" + string.Join("+", chain) + ")");
+                    missingNames.Add(ts.Names[j]);
                     continue;
                 }
 
@@ -205,8 +242,7 @@ namespace DeltaInterpolator.Core.Retargeting
 
             if (missing.Count > 0)
             {
-                var names = new List<string>();
-                for (int j = 0; j < jt; j++) if (chains[j] == null) names.Add(ts.Names[j]);
+                var names = missingNames;
                 throw new JointMapException(sourceName,
                     $"the skeleton has no joint for {missing.Count} of the target's {jt} joints: {string.Join(", ", missing)} (joint map '{map.Name}')",
                     "expected joints named as in LaFAN1, CMU, Mixamo or Unity HumanBodyBones; pass a JSON joint map (--map) naming the source joint of each",
@@ -220,6 +256,15 @@ namespace DeltaInterpolator.Core.Retargeting
             var carried = new int[jt][];
             for (int j = 0; j < jt; j++)
             {
+                if (synthesized[j])
+                {
+                    // Turns rigidly with its parent: the same source joint, so its local rotation is the reference's.
+                    sourceOf[j] = sourceOf[ts.Parents[j]];
+                    sourceFirst[j] = sourceOf[j];
+                    carried[j] = Array.Empty<int>();
+                    continue;
+                }
+
                 int[] chain = chains[j];
                 for (int i = 0; i < chain.Length; i++)
                 {
@@ -260,7 +305,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 carried[j] = path.ToArray();
             }
 
-            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, rootScale);
+            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, synthesized, rootScale);
         }
 
         /// <summary>
@@ -392,6 +437,7 @@ namespace DeltaInterpolator.Core.Retargeting
             ReadOnlySpan<int> parents = Target.ParentSpan;
             for (int j = 0; j < jt; j++)
             {
+                if (_synthesized[j]) continue; // nothing in the source to write: the joint was made up
                 QuaternionD qt = QuaternionD.Read(targetLocalRotations, 4 * j);
                 // The source-side rotation from s(parent) to s(j) (for the root: its global rotation).
                 QuaternionD wanted = j == 0
@@ -514,13 +560,6 @@ namespace DeltaInterpolator.Core.Retargeting
             double lowest = double.PositiveInfinity;
             foreach (int j in joints) lowest = Math.Min(lowest, pose.GlobalPosition(j).Y);
             return pose.GlobalPosition(root).Y - lowest;
-        }
-
-        private static int[] Identity(int count)
-        {
-            var a = new int[count];
-            for (int i = 0; i < count; i++) a[i] = i;
-            return a;
         }
     }
 }

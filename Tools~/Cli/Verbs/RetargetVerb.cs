@@ -71,6 +71,18 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "F",
         };
 
+        private readonly Option<double?> _inputFps = new Option<double?>("--input-fps")
+        {
+            Description = "The input's true frame rate when its header is wrong (CMU subjects 60 and 61 are 60 fps but say 120)",
+            HelpName = "F",
+        };
+
+        private readonly Option<int?> _fromFrame = new Option<int?>("--from-frame")
+        {
+            Description = "Drop the input frames before K (a T-pose, conversion artefacts); the reference frame may still be one of them",
+            HelpName = "K",
+        };
+
         private readonly Option<double?> _scale = new Option<double?>("--scale")
         {
             Description = "Model units per input unit for the root's position; default: the ratio of leg lengths (root height above the lowest joint in each reference pose), which also converts units",
@@ -102,6 +114,8 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_referenceFrame);
             command.Options.Add(_targetReferenceFrame);
             command.Options.Add(_fps);
+            command.Options.Add(_inputFps);
+            command.Options.Add(_fromFrame);
             command.Options.Add(_scale);
             command.Options.Add(_model);
             _output.AddTo(command);
@@ -124,6 +138,13 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"inbetween retarget: --fps {fps.Value.ToString(CultureInfo.InvariantCulture)}; expected a frame rate above 0");
             }
 
+            double? inputFps = parse.GetValue(_inputFps);
+            if (inputFps.HasValue && !(inputFps.Value >= 1 && inputFps.Value <= 1000))
+            {
+                throw new CliErrors.UsageException($"inbetween retarget: --input-fps {inputFps.Value.ToString(CultureInfo.InvariantCulture)}; expected a frame rate from 1 to 1000");
+            }
+
+            int? fromFrame = parse.GetValue(_fromFrame);
             double? scale = parse.GetValue(_scale);
             if (scale.HasValue && !(scale.Value > 0 && !double.IsInfinity(scale.Value)))
             {
@@ -143,7 +164,8 @@ namespace DeltaInterpolator.Cli.Verbs
             JointMap? userMap = mapPath == null ? null : JointMap.Load(mapPath, JointMap.Detect(source.Skeleton, contract.Skeleton));
             SkeletonMap toModelMap = Map(sourceReference, modelReference, userMap, input, scale);
 
-            MotionClip onModel = toModelMap.ToTarget(source.Motion);
+            MotionClip sourceMotion = Trim(source.Motion, fromFrame, inputFps, input);
+            MotionClip onModel = toModelMap.ToTarget(sourceMotion);
             BvhAnimation result;
             SkeletonMap? fromModelMap = null;
             if (toModel)
@@ -160,6 +182,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 fromModelMap = Map(otherReference, modelReference, userMap, to);
                 MotionClip otherPose = OneFrame(other.Skeleton, otherReference, source.Motion.FrameTime);
                 MotionClip onOther = fromModelMap.ToSource(onModel, otherPose);
+                if (inputFps.HasValue && !fps.HasValue) onOther = MotionResampler.Resample(onOther, source.Motion.FrameTime);
                 if (fps.HasValue) onOther = MotionResampler.Resample(onOther, 1.0 / fps.Value);
                 result = new BvhAnimation(onOther, other.JointChannels, other.EndSites, output);
             }
@@ -170,8 +193,27 @@ namespace DeltaInterpolator.Cli.Verbs
                 BvhWriter.Write(result, writer);
             });
 
-            PrintSummary(input, source, toModelMap, fromModelMap, parse.GetValue(_referenceFrame), scale.HasValue, result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
+            PrintSummary(input, source, toModelMap, fromModelMap, parse.GetValue(_referenceFrame), scale.HasValue, fromFrame, inputFps, result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
             return 0;
+        }
+
+        /// <summary>The input's frames from <paramref name="fromFrame"/> on, at its true frame rate.</summary>
+        private static MotionClip Trim(MotionClip motion, int? fromFrame, double? inputFps, string path)
+        {
+            int first = fromFrame ?? 0;
+            if (first < 0 || first > motion.FrameCount - 2)
+            {
+                throw new CliErrors.UsageException($"{path}: --from-frame {first} leaves fewer than two of the file's {motion.FrameCount} frames; expected 0 to {Math.Max(0, motion.FrameCount - 2)}");
+            }
+
+            double frameTime = inputFps.HasValue ? 1.0 / inputFps.Value : motion.FrameTime;
+            if (first == 0 && !inputFps.HasValue) return motion;
+            int j = motion.Skeleton.JointCount, n = motion.FrameCount - first;
+            var positions = new double[n * j * 3];
+            var rotations = new double[n * j * 4];
+            Array.Copy(motion.LocalPositions, motion.PositionIndex(first, 0), positions, 0, positions.Length);
+            Array.Copy(motion.LocalRotations, motion.RotationIndex(first, 0), rotations, 0, rotations.Length);
+            return new MotionClip(motion.Skeleton, n, frameTime, positions, rotations);
         }
 
         private static void RequireFile(string path, string what)
@@ -247,7 +289,7 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         private static void PrintSummary(string input, BvhAnimation source, SkeletonMap toModel, SkeletonMap? fromModel, int? referenceFrame, bool scaleGiven,
-            BvhAnimation result, string output, string target, double seconds)
+            int? fromFrame, double? inputFps, BvhAnimation result, string output, string target, double seconds)
         {
             var table = new Table().Border(TableBorder.Rounded).HideHeaders();
             table.AddColumn("");
@@ -257,6 +299,8 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Reference pose", referenceFrame.HasValue ? $"frame {referenceFrame.Value}"
                 : HasLafanNames(source.Skeleton) ? "the model's T-pose (LaFAN1 joint names and axes)" : "zero pose (all rotations 0)");
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
+            table.AddRow("Made up (synthesized)", Markup.Escape(toModel.SynthesizedJoints.Count == 0 ? "none"
+                : string.Join(", ", toModel.SynthesizedJoints) + ": the input lacks them; each is a rigid child of its parent at the model's T-pose offset"));
             table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
             table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "× {0:0.#####} {3}(model leg {1:0.##} ÷ input leg {2:0.###}: root height above the lowest joint in each reference pose)",
@@ -270,7 +314,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 table.AddRow("Target", Markup.Escape($"model '{target}' skeleton ({toModel.Target.JointCount} joints)"));
             }
 
-            table.AddRow("Frames", Markup.Escape($"{inClip.FrameCount} at {Fps(inClip.FrameTime)} fps → {outClip.FrameCount} at {Fps(outClip.FrameTime)} fps"));
+            table.AddRow("Frames", Markup.Escape($"{inClip.FrameCount} at {Fps(inClip.FrameTime)} fps{(fromFrame > 0 ? $" (from frame {fromFrame})" : "")}{(inputFps.HasValue ? $" (read as {Fps(1 / inputFps.Value)} fps)" : "")} → {outClip.FrameCount} at {Fps(outClip.FrameTime)} fps"));
             table.AddRow("Wrote", Markup.Escape($"{output} ({seconds.ToString("0.00", CultureInfo.InvariantCulture)} s)"));
             AnsiConsole.Write(table);
         }
@@ -287,6 +331,7 @@ namespace DeltaInterpolator.Cli.Verbs
             for (int j = 0; j < map.Target.JointCount; j++)
             {
                 string t = map.Target.Names[j];
+                if (map.IsSynthesized(j)) continue;
                 string s = string.Join("+", map.Map.SourceChain(t)!);
                 if (!string.Equals(s, t, StringComparison.Ordinal)) parts.Add(s + "→" + t);
             }

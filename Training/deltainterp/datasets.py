@@ -1,0 +1,325 @@
+"""Any humanoid BVH as training data: folders (or manifests naming them) → the model's skeleton → one pack.
+
+Retargeting is **not** re-implemented here: every file goes through the C# tool, `inbetween retarget FILE
+--to model` (`Runtime/Core/Retargeting`), so training data and everything a user bakes share one
+implementation (joint maps, synthesized joints, leg-length root scale, resampling to the model's rate).
+
+Per-file facts come from a manifest, never from code. A manifest is a JSON file; either `inbetween-data.json`
+inside a data folder, or any `NAME.json` given to `--data` whose `"folder"` names the data folder (relative
+to the manifest). Its fields (all optional):
+
+    {
+      "folder": "../../../shared/data/cmu",     # only in a manifest given to --data
+      "licence": "CMU: free for all uses ...",  # copied into the pack's provenance
+      "defaults": {"from_frame": 1, "reference_frame": 0, "fps": null, "map": null, "skip": false},
+      "files": {"60_*.bvh": {"fps": 60}, "07_12.bvh": {"from_frame": 2}},
+      "groups": "^(\\\\d+)_"                    # optional: a regex whose group 1 names a file's subject
+    }
+
+`from_frame` drops the frames before it (a T-pose, conversion artefacts: they are never keys, never
+scored, never trained on); `reference_frame` is the frame (0-based, may be a dropped one) whose pose is the
+skeleton's reference (null: its default pose, see `inbetween retarget --help`); `fps` overrides a wrong
+header; `map` is a JSON joint map (path relative to the manifest) for names the built-in maps miss; `skip`
+leaves a file out. `files` keys are globs on the path relative to the folder; later matches override
+earlier ones, options on the command line override the defaults.
+"""
+from __future__ import annotations
+
+import fnmatch
+import hashlib
+import json
+import os
+import re
+import stat
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Dict, List, Optional, Sequence
+
+import numpy as np
+
+MANIFEST_NAME = "inbetween-data.json"
+FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip"}
+REPO_ROOT = Path(__file__).resolve().parents[2]
+MAX_MANIFEST_BYTES = 1 << 20
+
+
+@dataclass
+class FilePlan:
+    path: Path                  # the BVH file
+    name: str                   # its path relative to its folder (what holdout globs and messages use)
+    folder: str                 # the folder's display name
+    from_frame: int = 0
+    reference_frame: Optional[int] = None
+    fps: Optional[float] = None
+    map: Optional[Path] = None
+    time_scale: float = 1.0     # > 1: played slower (more frames), < 1: faster; 1 = as captured
+    group: str = ""
+
+
+@dataclass
+class DataSource:
+    folder: Path
+    manifest: Optional[Path]
+    defaults: Dict
+    files: Dict[str, Dict]
+    licence: str = ""
+    groups: Optional[str] = None
+    plans: List[FilePlan] = field(default_factory=list)
+
+
+def _fail(path, what: str, expected: str) -> ValueError:
+    return ValueError(f"{path}: {what}; {expected}")
+
+
+def _read_manifest(path: Path) -> Dict:
+    if not path.is_file():
+        raise _fail(path, "is not a regular file", "expected a JSON data manifest")
+    if path.stat().st_size > MAX_MANIFEST_BYTES:
+        raise _fail(path, f"is {path.stat().st_size} bytes", f"expected a manifest under {MAX_MANIFEST_BYTES} bytes")
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (ValueError, UnicodeDecodeError, RecursionError) as e:
+        raise _fail(path, f"is not valid JSON ({' '.join(str(e).split())[:120]})", "expected a JSON data manifest") from None
+    if not isinstance(data, dict):
+        raise _fail(path, "holds no JSON object", "expected {\"defaults\": {...}, \"files\": {GLOB: {...}}}")
+    unknown = set(data) - {"folder", "licence", "defaults", "files", "groups", "comment"}
+    if unknown:
+        raise _fail(path, f"has unknown fields {sorted(unknown)}",
+                    "expected folder, licence, defaults, files, groups, comment")
+    for key in ("defaults",):
+        if key in data and not isinstance(data[key], dict):
+            raise _fail(path, f"\"{key}\" is not an object", "expected per-file settings")
+    if "files" in data and not (isinstance(data["files"], dict) and all(isinstance(v, dict) for v in data["files"].values())):
+        raise _fail(path, "\"files\" is not an object of objects", "expected {GLOB: {setting: value}}")
+    for where in [data.get("defaults", {})] + list(data.get("files", {}).values()):
+        _check_settings(path, where)
+    if "groups" in data:
+        try:
+            re.compile(str(data["groups"]))
+        except re.error as e:
+            raise _fail(path, f"\"groups\" is not a regular expression ({e})", "expected e.g. \"^(\\\\d+)_\"") from None
+    return data
+
+
+def _check_settings(path: Path, settings: Dict) -> None:
+    unknown = set(settings) - FILE_FIELDS
+    if unknown:
+        raise _fail(path, f"unknown settings {sorted(unknown)}", f"expected {sorted(FILE_FIELDS)}")
+    for key in ("from_frame", "reference_frame"):
+        v = settings.get(key)
+        if v is not None and not (isinstance(v, int) and not isinstance(v, bool) and 0 <= v < 1_000_000):
+            raise _fail(path, f"\"{key}\": {v!r}", "expected a frame index from 0 (or null)")
+    v = settings.get("fps")
+    if v is not None and not (isinstance(v, (int, float)) and not isinstance(v, bool) and 1 <= v <= 1000):
+        raise _fail(path, f"\"fps\": {v!r}", "expected a frame rate from 1 to 1000 (or null)")
+    if settings.get("map") is not None and not isinstance(settings["map"], str):
+        raise _fail(path, f"\"map\": {settings['map']!r}", "expected a path to a JSON joint map (or null)")
+    if "skip" in settings and not isinstance(settings["skip"], bool):
+        raise _fail(path, f"\"skip\": {settings['skip']!r}", "expected true or false")
+
+
+def open_source(spec: str) -> DataSource:
+    """A `--data` value: a folder (with an optional inbetween-data.json) or a manifest naming its folder."""
+    p = Path(spec)
+    if p.is_dir():
+        manifest = p / MANIFEST_NAME
+        data = _read_manifest(manifest) if manifest.exists() else {}
+        folder = p
+        manifest_path = manifest if manifest.exists() else None
+    elif p.is_file():
+        data = _read_manifest(p)
+        if "folder" not in data or not isinstance(data["folder"], str):
+            raise _fail(p, "names no \"folder\"", "expected a manifest with \"folder\": the data folder, relative to it")
+        folder = (p.parent / data["folder"]).resolve()
+        manifest_path = p
+        if not folder.is_dir():
+            raise _fail(p, f"\"folder\" {data['folder']!r} is not a folder ({folder})",
+                        "expected the data folder beside the repository (../shared/data/...)")
+    else:
+        raise FileNotFoundError(f"{spec}: not found; expected a folder of BVH files or a data manifest (.json)")
+    return DataSource(folder, manifest_path, dict(data.get("defaults", {})), dict(data.get("files", {})),
+                      str(data.get("licence", "")), data.get("groups"))
+
+
+def plan_files(source: DataSource, options: Dict, holdout: Sequence[str], time_scales: Sequence[float]) -> List[FilePlan]:
+    """Every BVH under the folder (recursively, sorted), with its settings, minus skipped and held-out files."""
+    plans = []
+    base = source.manifest.parent if source.manifest else source.folder
+    for path in sorted(source.folder.rglob("*")):
+        if path.suffix.lower() != ".bvh":
+            continue
+        name = path.relative_to(source.folder).as_posix()
+        try:
+            mode = path.stat().st_mode
+        except OSError as e:
+            raise _fail(path, f"cannot be read ({e.strerror})", "expected readable BVH files") from None
+        if not stat.S_ISREG(mode):
+            raise _fail(path, "is not a regular file (a FIFO, device or folder named .bvh)", "expected BVH files")
+        if any(fnmatch.fnmatchcase(name, g) or fnmatch.fnmatchcase(path.name, g) for g in holdout):
+            continue
+        settings = dict(source.defaults)
+        settings.update({k: v for k, v in options.items() if v is not None})
+        for glob, override in source.files.items():
+            if fnmatch.fnmatchcase(name, glob) or fnmatch.fnmatchcase(path.name, glob):
+                settings.update(override)
+        if settings.get("skip"):
+            continue
+        map_path = None
+        if settings.get("map"):
+            map_path = Path(settings["map"])
+            if not map_path.is_absolute() and source.manifest is not None and settings["map"] != options.get("map"):
+                map_path = base / map_path
+        group = ""
+        if source.groups:
+            m = re.search(source.groups, name)
+            group = m.group(1) if m and m.groups() else ""
+        for scale in [1.0] + [s for s in time_scales if s != 1.0]:
+            plans.append(FilePlan(path, name, str(source.folder), int(settings.get("from_frame") or 0),
+                                  settings.get("reference_frame"), settings.get("fps"), map_path, scale, group))
+    return plans
+
+
+def cli_command() -> List[str]:
+    """The `inbetween` tool: INBETWEEN (a command line) when set, else the repository's launcher."""
+    override = os.environ.get("INBETWEEN")
+    if override:
+        return override.split()
+    return [str(REPO_ROOT / "Tools~" / "inbetween")]
+
+
+def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]:
+    args = ["retarget", str(plan.path), "--to", "model", "--out", str(out), "--force"]
+    if plan.from_frame:
+        args += ["--from-frame", str(plan.from_frame)]
+    if plan.reference_frame is not None:
+        args += ["--reference-frame", str(plan.reference_frame)]
+    if plan.map is not None:
+        args += ["--map", str(plan.map)]
+    if model:
+        args += ["--model", model]
+    # A time scale s plays the motion s times as long: the file is read as if captured at fps / s.
+    if plan.fps is not None or plan.time_scale != 1.0:
+        header_fps = plan.fps
+        if header_fps is None:
+            header_fps = 1.0 / _frame_time(plan.path)
+        args += ["--input-fps", repr(float(header_fps) / plan.time_scale)]
+    return args
+
+
+def _frame_time(path: Path) -> float:
+    with open(path, "r", encoding="utf-8", errors="replace") as f:
+        for i, line in enumerate(f):
+            if line.strip().lower().startswith("frame time:"):
+                try:
+                    value = float(line.split(":", 1)[1])
+                except ValueError:
+                    break
+                if value > 0:
+                    return value
+                break
+            if i > 100_000:
+                break
+    raise _fail(path, "has no readable 'Frame Time:' line", "expected a BVH file")
+
+
+def _cache_key(plan: FilePlan, args: List[str]) -> str:
+    st = plan.path.stat()
+    h = hashlib.sha256()
+    h.update(json.dumps([str(plan.path.resolve()), st.st_size, int(st.st_mtime), args[3:]]).encode())
+    if plan.map is not None and plan.map.is_file():
+        h.update(plan.map.read_bytes()[:MAX_MANIFEST_BYTES])
+    return h.hexdigest()[:20]
+
+
+def retarget_all(plans: List[FilePlan], cache: Path, model: Optional[str] = None, jobs: int = 2,
+                 progress: bool = True) -> List[Path]:
+    """Each plan through `inbetween retarget` (cached under `cache` by file, settings and map)."""
+    cache.mkdir(parents=True, exist_ok=True)
+    tool = cli_command()
+    outputs: List[Optional[Path]] = [None] * len(plans)
+    work = []
+    for i, plan in enumerate(plans):
+        args = _retarget_args(plan, Path("OUT"), model)
+        target = cache / f"{_cache_key(plan, args)}.bvh"
+        outputs[i] = target
+        if not target.exists():
+            work.append((i, plan, target))
+    if work and tool == [str(REPO_ROOT / "Tools~" / "inbetween")]:
+        # Build once, before the parallel calls (each would otherwise wait on the build lock).
+        subprocess.run(tool + ["--help"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    bar = None
+    if progress and work:
+        from tqdm import tqdm
+        bar = tqdm(total=len(work), desc="retargeting (inbetween retarget)", unit="file")
+
+    def one(item):
+        i, plan, target = item
+        tmp = target.with_name(f".{target.stem}.{os.getpid()}.{i}.tmp.bvh")
+        args = _retarget_args(plan, tmp, model)
+        r = subprocess.run(tool + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                           stdin=subprocess.DEVNULL)
+        if r.returncode != 0 or not tmp.exists():
+            if tmp.exists():
+                tmp.unlink()
+            message = (r.stderr.strip().splitlines() or r.stdout.strip().splitlines() or ["no message"])[-1]
+            raise ValueError(f"{plan.path}: `inbetween retarget` failed (exit {r.returncode}): {message}; "
+                             "expected a humanoid BVH the built-in joint maps or the manifest's \"map\" cover")
+        os.replace(tmp, target)
+        if bar is not None:
+            bar.update(1)
+
+    try:
+        with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+            for _ in pool.map(one, work):
+                pass
+    finally:
+        if bar is not None:
+            bar.close()
+    return [p for p in outputs if p is not None]
+
+
+def prepare_any(data: Sequence[str], out: str, holdout: Sequence[str] = (), options: Optional[Dict] = None,
+                time_scales: Sequence[float] = (), cache: str = "Training/.data/retargeted",
+                model: Optional[str] = None, jobs: int = 2, progress: bool = True):
+    """Folders/manifests → retargeted model-skeleton motion → one pack (see module doc)."""
+    from .bvh import read_bvh
+    from .data import MotionPack, save_pack
+    options = dict(options or {})
+    sources = [open_source(d) for d in data]
+    plans: List[FilePlan] = []
+    for s in sources:
+        s.plans = plan_files(s, options, holdout, time_scales)
+        plans += s.plans
+    if not plans:
+        raise ValueError(f"{', '.join(data)}: no BVH files left (after --holdout and \"skip\"); expected *.bvh files")
+    outputs = retarget_all(plans, Path(cache), model, jobs, progress)
+    roots, quats, names, augmented, groups = [], [], [], [], []
+    skeleton, frame_time = None, None
+    for plan, path in zip(plans, outputs):
+        m = read_bvh(path)
+        if skeleton is None:
+            skeleton, frame_time = m.skeleton, m.frame_time
+        elif m.skeleton.names != skeleton.names or m.skeleton.parents != skeleton.parents:
+            raise ValueError(f"{plan.path}: retargeted onto another skeleton than {plans[0].path}; expected one model")
+        if not (np.isfinite(m.root_positions).all() and np.isfinite(m.local_quaternions).all()):
+            raise ValueError(f"{plan.path}: its motion holds NaN or infinite values after retargeting; "
+                             "expected finite motion (refused here rather than by `train`)")
+        roots.append(m.root_positions.astype(np.float32))
+        quats.append(m.local_quaternions.astype(np.float32))
+        tag = "" if plan.time_scale == 1.0 else f"@x{plan.time_scale:g}"
+        names.append(f"{Path(plan.folder).name}/{plan.name}{tag}")
+        augmented.append(plan.time_scale != 1.0)
+        groups.append(plan.group)
+    assert skeleton is not None and frame_time is not None
+    starts = np.cumsum([0] + [len(r) for r in roots])
+    pack = MotionPack(skeleton, names, starts, np.concatenate(roots), np.concatenate(quats), frame_time,
+                      augmented=np.asarray(augmented, dtype=bool))
+    save_pack(pack, out)
+    return pack, plans, sources
+
+
+__all__ = ["open_source", "plan_files", "retarget_all", "prepare_any", "MANIFEST_NAME", "FilePlan"]
