@@ -24,6 +24,7 @@ namespace DeltaInterpolator.Cli
             new RetargetVerb(),
             new PreviewVerb(),
             new PackVerb(),
+            new ScoreVerb(),
             new SpeedVerb(),
         };
 

@@ -12,6 +12,7 @@ using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
+using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.OnnxRuntime;
 using DeltaInterpolator.Preview;
@@ -26,7 +27,7 @@ namespace DeltaInterpolator.Cli.Verbs
     /// </summary>
     public sealed class BakeVerb : ICliVerb
     {
-        private const string ShippedModel = "Runtime/Models/DeltaInterpolator-LaFAN1.onnx";
+        private const string ShippedModel = ShippedModels.Default;
         private const string DefaultStats = "../shared/data/lafan1/train_stats_official.json";
 
         private readonly Argument<string> _input = new Argument<string>("IN.bvh")
@@ -88,6 +89,30 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "K",
         };
 
+        private readonly Option<string?> _map = new Option<string?>("--map")
+        {
+            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\"] or null, …} for names the built-in maps miss (the format 'retarget --map' reads; null or omitted: a joint the rig lacks, synthesized).",
+            HelpName = "MAP.json",
+        };
+
+        private readonly Option<double?> _inputFps = new Option<double?>("--input-fps")
+        {
+            Description = "The input's true frame rate when its header is wrong (CMU subjects 60 and 61: 60 fps, the header says 120); the output says it too.",
+            HelpName = "F",
+        };
+
+        private readonly Option<int?> _fromFrame = new Option<int?>("--from-frame")
+        {
+            Description = "The first frame that may be a key (frames before it — a T-pose, conversion artefacts — are never keys and never scored); --every counts from it.",
+            HelpName = "K",
+        };
+
+        private readonly Option<string?> _json = new Option<string?>("--json")
+        {
+            Description = "Also write each method's scores as JSON: mean joint position error (file units and ÷ leg length), L2Q, L2P, non-key frames (what 'score' adds up over folders).",
+            HelpName = "OUT.json",
+        };
+
         private readonly Option<string?> _preview = new Option<string?>("--preview")
         {
             Description = "Also write a self-contained HTML player of ground truth, SLERP and model over the baked frames (input's skeleton).",
@@ -140,6 +165,10 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_out);
             _output.AddTo(command);
             command.Options.Add(_referenceFrame);
+            command.Options.Add(_map);
+            command.Options.Add(_inputFps);
+            command.Options.Add(_fromFrame);
+            command.Options.Add(_json);
             command.Options.Add(_preview);
             command.Options.Add(_png);
             command.Options.Add(_stats);
@@ -178,29 +207,46 @@ namespace DeltaInterpolator.Cli.Verbs
 
             if (threads < 1) throw new CliErrors.UsageException($"inbetween bake: --threads {threads}; expected 1 or more");
             if (!File.Exists(input)) throw new CliErrors.UsageException($"{input}: no such file; expected a .bvh file");
-            string modelPath = parse.GetValue(_model) ?? DefaultModelPath();
+            string modelPath = parse.GetValue(_model) ?? ShippedModels.Find(ShippedModel);
             if (!File.Exists(modelPath)) throw new CliErrors.UsageException($"{modelPath}: no such file; expected an exported model (NAME.onnx), e.g. {ShippedModel}");
             string? statsGiven = parse.GetValue(_stats);
             if (statsGiven != null && !File.Exists(statsGiven)) throw new CliErrors.UsageException($"{statsGiven}: no such file; expected a statistics JSON such as {DefaultStats}");
             string? statsPath = statsGiven ?? (File.Exists(DefaultStats) ? DefaultStats : null);
 
-            // Before any work: the output must be writable and must not replace an input.
-            string outFull = OutputFile.Check(outPath, force, input, modelPath, statsPath);
+            string? mapPath = parse.GetValue(_map);
+            if (mapPath != null && !File.Exists(mapPath)) throw new CliErrors.UsageException($"{mapPath}: no such file; expected a JSON joint map");
+            double? inputFps = parse.GetValue(_inputFps);
+            if (inputFps.HasValue && !(inputFps.Value >= 1 && inputFps.Value <= 1000))
+            {
+                throw new CliErrors.UsageException($"inbetween bake: --input-fps {inputFps.Value.ToString(CultureInfo.InvariantCulture)}; expected a frame rate from 1 to 1000");
+            }
+
+            int fromFrame = parse.GetValue(_fromFrame) ?? 0;
+            if (fromFrame < 0) throw new CliErrors.UsageException($"inbetween bake: --from-frame {fromFrame}; expected a frame index from 0");
+
+            // Before any work: the outputs must be writable and must not replace an input or each other.
+            string outFull = OutputFile.Check(outPath, force, input, modelPath, statsPath, mapPath);
+            string? jsonPath = parse.GetValue(_json);
+            string? jsonFull = jsonPath == null ? null : OutputFile.Check(jsonPath, force, input, modelPath, statsPath, mapPath);
+            if (jsonFull != null && string.Equals(jsonFull, outFull, StringComparison.Ordinal)) throw new CliErrors.UsageException($"{jsonPath}: the same file as --out; expected a different path for --json");
             string? previewPath = parse.GetValue(_preview);
             string? pngPath = parse.GetValue(_png);
-            CheckPreviewOutputs(previewPath, pngPath, new[] { outFull }, force, input, modelPath, statsPath);
+            CheckPreviewOutputs(previewPath, pngPath, jsonFull == null ? new[] { outFull } : new[] { outFull, jsonFull }, force, input, modelPath, statsPath, mapPath);
 
             var read = Stopwatch.StartNew();
-            BvhAnimation animation = BvhReader.Read(input);
+            BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(input), inputFps);
             double readSeconds = read.Elapsed.TotalSeconds;
-            int[] inputKeys = keysText != null ? ParseKeys(keysText, input) : EveryKeys(every!.Value, animation.Motion.FrameCount, input);
 
             var load = Stopwatch.StartNew();
             // The whole graph only: baking runs whole transitions, so the lazy graphs would only cost load time.
             using var model = new Inbetweener(OnnxRuntimeBackend.Load(modelPath, new OnnxRuntimeOptions { IntraOpThreads = threads }));
             double loadSeconds = load.Elapsed.TotalSeconds;
+            JointMap? jointMap = BakeInput.LoadMap(mapPath, animation, model.Contract);
+            int[] inputKeys = keysText != null
+                ? BakeInput.CheckFrom(ParseKeys(keysText, input), fromFrame, input)
+                : BakeInput.Every(every!.Value, animation.Motion, fromFrame, model.Contract, input);
 
-            BakeOutcome outcome = BakeBoth(animation, input, inputKeys, model, policy, context == "filled", parse.GetValue(_referenceFrame));
+            BakeOutcome outcome = BakeBoth(animation, input, inputKeys, model, policy, context == "filled", parse.GetValue(_referenceFrame), jointMap);
             MotionClip modelOut = outcome.ModelOut, slerpOut = outcome.SlerpOut;
             BakePlan modelPlan = outcome.ModelPlan;
             BenchmarkStatistics? statistics = LoadStatistics(statsPath, statsGiven != null, animation.Skeleton, input);
@@ -218,6 +264,16 @@ namespace DeltaInterpolator.Cli.Verbs
             BakeAccuracy slerpScore = BakeAccuracy.Measure(animation.Motion, slerpOut, inputKeys, std);
             PrintSummary(input, animation, inputKeys, modelPlan, outcome.ModelSettings, model.Contract, outcome.Seam, outPath, method,
                 modelScore, slerpScore, statistics, outcome.ModelSeconds, outcome.SlerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds);
+            if (jsonFull != null)
+            {
+                string json = BakeReport.Json(input, animation, inputKeys, outcome, model.Contract, modelPath, modelScore, slerpScore);
+                OutputFile.Write(jsonFull, stream =>
+                {
+                    using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
+                    writer.Write(json);
+                });
+                AnsiConsole.MarkupLine(Markup.Escape("wrote " + jsonPath));
+            }
             if (previewPath != null)
             {
                 WritePreview(animation, inputKeys, outcome, previewPath, pngPath, force);
@@ -231,9 +287,9 @@ namespace DeltaInterpolator.Cli.Verbs
         /// back on the input's. Same-skeleton inputs at the model's rate go straight in; any other humanoid
         /// is retargeted (<see cref="SkeletonRetargeting"/>). Progress of the model's gaps on stderr.
         /// </summary>
-        internal static BakeOutcome BakeBoth(BvhAnimation animation, string input, int[] inputKeys, Inbetweener model, ShortContextPolicy? policy, bool filledContext, int? referenceFrame)
+        internal static BakeOutcome BakeBoth(BvhAnimation animation, string input, int[] inputKeys, Inbetweener model, ShortContextPolicy? policy, bool filledContext, int? referenceFrame, JointMap? map = null, bool quiet = false)
         {
-            IBakeRetargeting seam = ChooseSeam(model.Contract, animation, input, referenceFrame);
+            IBakeRetargeting seam = ChooseSeam(model.Contract, animation, input, referenceFrame, map);
             MotionClip source = seam.ToModel(animation, inputKeys);
             int[] modelKeys = seam.KeysToModel(inputKeys);
 
@@ -246,24 +302,32 @@ namespace DeltaInterpolator.Cli.Verbs
 
             MotionClip? modelClip = null, slerpClip = null;
             double modelSeconds = 0, slerpSeconds = 0;
-            IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings
+            void Run(IProgress<int>? reporter)
             {
-                Out = new AnsiConsoleOutput(Console.Error),
-                Interactive = Console.IsErrorRedirected ? InteractionSupport.No : InteractionSupport.Detect,
-            });
-            progressConsole.Progress()
-                .AutoClear(true)
-                .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn(), new RemainingTimeColumn())
-                .Start(ctx =>
+                var sw = Stopwatch.StartNew();
+                modelClip = modelBaker.Bake(source, modelPlan, reporter);
+                modelSeconds = sw.Elapsed.TotalSeconds;
+                sw.Restart();
+                slerpClip = slerpBaker.Bake(source, slerpPlan);
+                slerpSeconds = sw.Elapsed.TotalSeconds;
+            }
+
+            if (quiet)
+            {
+                Run(null); // a caller with its own progress (score)
+            }
+            else
+            {
+                IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings
                 {
-                    IProgress<int>? reporter = Console.IsErrorRedirected ? null : new GapProgress(new SpectreProgress(ctx), modelPlan.Gaps.Count);
-                    var sw = Stopwatch.StartNew();
-                    modelClip = modelBaker.Bake(source, modelPlan, reporter);
-                    modelSeconds = sw.Elapsed.TotalSeconds;
-                    sw.Restart();
-                    slerpClip = slerpBaker.Bake(source, slerpPlan);
-                    slerpSeconds = sw.Elapsed.TotalSeconds;
+                    Out = new AnsiConsoleOutput(Console.Error),
+                    Interactive = Console.IsErrorRedirected ? InteractionSupport.No : InteractionSupport.Detect,
                 });
+                progressConsole.Progress()
+                    .AutoClear(true)
+                    .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn(), new RemainingTimeColumn())
+                    .Start(ctx => Run(Console.IsErrorRedirected ? null : new GapProgress(new SpectreProgress(ctx), modelPlan.Gaps.Count)));
+            }
 
             // Model skeleton and rate → input skeleton and rate.
             MotionClip modelOut = seam.FromModel(modelClip!, animation, inputKeys);
@@ -272,7 +336,7 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         /// <summary>The input as is when it is on the model's skeleton at its rate; otherwise retargeted.</summary>
-        private static IBakeRetargeting ChooseSeam(ModelContract contract, BvhAnimation animation, string input, int? referenceFrame)
+        private static IBakeRetargeting ChooseSeam(ModelContract contract, BvhAnimation animation, string input, int? referenceFrame, JointMap? map)
         {
             bool sameSkeleton;
             try
@@ -287,12 +351,12 @@ namespace DeltaInterpolator.Cli.Verbs
 
             double frameTime = 1.0 / contract.FramesPerSecond;
             // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the model's rate.
-            if (sameSkeleton && referenceFrame == null && Math.Abs(animation.Motion.FrameTime - frameTime) <= 1e-4 * frameTime)
+            if (sameSkeleton && referenceFrame == null && map == null && Math.Abs(animation.Motion.FrameTime - frameTime) <= 1e-4 * frameTime)
             {
                 return new SameSkeleton(contract, input);
             }
 
-            return SkeletonRetargeting.Create(contract, animation, referenceFrame, input);
+            return SkeletonRetargeting.Create(contract, animation, referenceFrame, input, map);
         }
 
         /// <summary>The HTML player (and contact sheet) of ground truth, SLERP and model over the baked frames, on the input's skeleton.</summary>
@@ -465,33 +529,6 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             return keys.ToArray();
-        }
-
-        private static int[] EveryKeys(int interval, int frameCount, string input)
-        {
-            try
-            {
-                return KeyFrames.Every(interval, frameCount);
-            }
-            catch (KeyLayoutException e)
-            {
-                throw new CliErrors.UsageException($"{input}: --every {interval}: {e.Message}");
-            }
-        }
-
-        /// <summary>The shipped model: relative to the working directory, else in the checkout this tool was built in.</summary>
-        private static string DefaultModelPath()
-        {
-            if (File.Exists(ShippedModel)) return ShippedModel;
-            string? dir = AppContext.BaseDirectory;
-            while (dir != null)
-            {
-                string candidate = Path.Combine(dir, ShippedModel);
-                if (File.Exists(candidate)) return candidate;
-                dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
-            }
-
-            return ShippedModel;
         }
     }
 }

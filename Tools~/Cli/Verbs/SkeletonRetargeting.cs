@@ -37,8 +37,9 @@ namespace DeltaInterpolator.Cli.Verbs
             _modelFrameTime = modelFrameTime;
             _inputPath = inputPath;
             Description = string.Format(CultureInfo.InvariantCulture,
-                "retargeted with map '{0}' ({1} joints → the model's {2}; reference: {3}; root × {4:0.#####}) at {5:0.##} fps, baked results mapped back onto the input's skeleton and rate",
-                map.Map.Name, map.Source.JointCount, map.Target.JointCount, reference, map.RootScale, 1 / modelFrameTime);
+                "retargeted with map '{0}' ({1} joints → the model's {2}{6}; reference: {3}; root × {4:0.#####}) at {5:0.##} fps, baked results mapped back onto the input's skeleton and rate",
+                map.Map.Name, map.Source.JointCount, map.Target.JointCount, reference, map.RootScale, 1 / modelFrameTime,
+                map.SynthesizedJoints.Count == 0 ? "" : "; made up (the input lacks them): " + string.Join(", ", map.SynthesizedJoints));
         }
 
         /// <inheritdoc />
@@ -55,8 +56,9 @@ namespace DeltaInterpolator.Cli.Verbs
         /// <param name="input">The input file's animation.</param>
         /// <param name="referenceFrame">The input frame that is its reference pose, or null for <see cref="ReferencePose.Default"/>.</param>
         /// <param name="inputPath">The input's path, for messages.</param>
+        /// <param name="jointMap">A user joint map, or null for the best built-in one.</param>
         /// <exception cref="CliErrors.UsageException">Joints missing, or the reference frame is not a frame of the file.</exception>
-        public static SkeletonRetargeting Create(ModelContract contract, BvhAnimation input, int? referenceFrame, string inputPath)
+        public static SkeletonRetargeting Create(ModelContract contract, BvhAnimation input, int? referenceFrame, string inputPath, JointMap? jointMap = null)
         {
             ReferencePose source;
             if (referenceFrame == null)
@@ -76,7 +78,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
             try
             {
-                SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), null, inputPath);
+                SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath);
                 return new SkeletonRetargeting(map, 1.0 / contract.FramesPerSecond, input.Motion.FrameTime, inputPath,
                     referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));
             }
