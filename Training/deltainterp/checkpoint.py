@@ -296,6 +296,9 @@ def _describe_training_data(pack_path, fps: float) -> Tuple[float, str]:
     if pack_path and Path(pack_path).exists():
         import numpy as np
         with np.load(pack_path, allow_pickle=False) as z:
-            description += f" ({len(z['files'])} files)"
+            if "description" in z.files and str(z["description"]):
+                description = str(z["description"])  # a pack of any humanoid BVH says what it holds
+            else:
+                description += f" ({len(z['files'])} files)"
             fps = round(1.0 / float(z["frame_time"]), 3)
     return fps, description

@@ -31,6 +31,8 @@ class MotionPack:
     # Per file: True for an augmented copy (e.g. a time-scaled one): trained on (its first 90 %, like any
     # file), never validated on. None (packs written before) means no file is augmented.
     augmented: Optional[np.ndarray] = None
+    # What the data is (folders, held-out globs, licences): exported into the model's metadata. "" = LaFAN1.
+    description: str = ""
 
     def is_augmented(self, i: int) -> bool:
         return bool(self.augmented is not None and self.augmented[i])
@@ -81,7 +83,8 @@ def save_pack(pack: MotionPack, path: str) -> None:
         f, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files), starts=pack.starts,
         root_positions=pack.root_positions, local_quaternions=pack.local_quaternions,
         frame_time=pack.frame_time,
-        augmented=pack.augmented if pack.augmented is not None else np.zeros(len(pack.files), dtype=bool)))
+        augmented=pack.augmented if pack.augmented is not None else np.zeros(len(pack.files), dtype=bool),
+        description=np.array(pack.description)))
 
 
 PACK_EXPECTED = "expected a pack written by `python3 -m deltainterp prepare`"
@@ -99,7 +102,8 @@ def load_pack(path: str) -> MotionPack:
             pack = MotionPack(Skeleton.from_json(json.loads(str(z["skeleton"]))), [str(f) for f in z["files"]],
                               np.asarray(z["starts"]), np.asarray(z["root_positions"]),
                               np.asarray(z["local_quaternions"]), float(z["frame_time"]),
-                              np.asarray(z["augmented"], dtype=bool) if "augmented" in z.files else None)
+                              np.asarray(z["augmented"], dtype=bool) if "augmented" in z.files else None,
+                              str(z["description"]) if "description" in z.files else "")
     except Exception as e:  # noqa: BLE001 - a file from anywhere: any failure to read it is the file's
         detail = " ".join(str(e).split())[:160]
         raise ValueError(f"{path}: not a readable pack ({type(e).__name__}: {detail}); {PACK_EXPECTED}") from None

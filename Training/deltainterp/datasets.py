@@ -316,8 +316,15 @@ def prepare_any(data: Sequence[str], out: str, holdout: Sequence[str] = (), opti
         groups.append(plan.group)
     assert skeleton is not None and frame_time is not None
     starts = np.cumsum([0] + [len(r) for r in roots])
+    originals = sum(1 for a in augmented if not a)
+    minutes = sum(len(r) for r, a in zip(roots, augmented) if not a) * frame_time / 60
+    parts = [f"{sum(1 for p in s.plans if p.time_scale == 1.0)} files of {s.folder.name}" for s in sources]
+    description = (f"{originals} files ({minutes:.1f} min at {1 / frame_time:.0f} fps): " + ", ".join(parts)
+                   + (f"; held out: {' '.join(holdout)}" if holdout else "")
+                   + (f"; time-scaled copies x{', x'.join(f'{t:g}' for t in time_scales)}" if time_scales else "")
+                   + "." + "".join(f" {s.licence}" for s in sources if s.licence))
     pack = MotionPack(skeleton, names, starts, np.concatenate(roots), np.concatenate(quats), frame_time,
-                      augmented=np.asarray(augmented, dtype=bool))
+                      augmented=np.asarray(augmented, dtype=bool), description=description)
     save_pack(pack, out)
     return pack, plans, sources
 
