@@ -154,7 +154,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 "skeleton and rate, its key frames kept exactly. --preview writes an HTML player of ground truth, SLERP and model.\n" +
                 "Examples:\n" +
                 "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n" +
-                "  inbetween bake Samples~/Demo/cmu_01_01_jumps_turn.bvh --every 40 --out out/jumps-every40.bvh --preview out/jumps.html --png out/jumps.png --force");
+                "  inbetween bake Samples~/Demo/cmu_09_12_walk_navigate.bvh --every 60 --reference-frame 0 --from-frame 1 --out out/walk-every60.bvh --json out/walk-every60.json --preview out/walk.html --png out/walk.png --force\n" +
+                "  inbetween bake ../shared/data/cmu-more/60_01.bvh --input-fps 60 --from-frame 10 --every 30 --out out/salsa.bvh --force");
             command.Arguments.Add(_input);
             command.Options.Add(_keys);
             command.Options.Add(_every);

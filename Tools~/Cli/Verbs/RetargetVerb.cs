@@ -26,7 +26,7 @@ namespace DeltaInterpolator.Cli.Verbs
     public sealed class RetargetVerb : ICliVerb
     {
         /// <summary>The model whose skeleton <c>--to model</c> means when <c>--model</c> is not given.</summary>
-        internal const string DefaultModel = "Runtime/Models/DeltaInterpolator-LaFAN1.onnx";
+        internal const string DefaultModel = ShippedModels.Default;
 
         private readonly Argument<string> _input = new Argument<string>("IN")
         {
@@ -106,7 +106,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "scaling the root by leg length and resampling to the model's frame rate.\n" +
                 "Joints are matched by name (built-in LaFAN1, CMU, Mixamo and Unity HumanBodyBones tables, or --map);\n" +
                 "a skeleton missing joints the model needs is refused with their names (exit status 2).\n" +
-                "Example:\n  inbetween retarget Samples~/Demo/cmu_01_01_jumps_turn.bvh --to model --out out/jumps_on_model.bvh");
+                "Example:\n  inbetween retarget Samples~/Demo/cmu_09_12_walk_navigate.bvh --to model --reference-frame 0 --from-frame 1 --out out/walk_on_model.bvh");
             command.Arguments.Add(_input);
             command.Options.Add(_to);
             command.Options.Add(_out);
@@ -130,7 +130,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string to = parse.GetValue(_to)!;
             string output = parse.GetValue(_out)!;
             string? mapPath = parse.GetValue(_map);
-            string modelPath = parse.GetValue(_model) ?? DefaultModel;
+            string modelPath = parse.GetValue(_model) ?? ShippedModels.Find(DefaultModel);
             bool toModel = string.Equals(to, "model", StringComparison.Ordinal);
             double? fps = parse.GetValue(_fps);
             if (fps.HasValue && !(fps.Value > 0 && fps.Value <= 10000))

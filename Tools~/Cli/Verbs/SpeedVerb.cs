@@ -28,7 +28,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly ModelOptions _model = new ModelOptions(
             "speed",
-            "The exported model (NAME.onnx; NAME.keys.onnx and NAME.frame.onnx beside it time lazy decoding). Default: the shipped Runtime/Models/DeltaInterpolator-LaFAN1.onnx.",
+            "The exported model (NAME.onnx; NAME.keys.onnx and NAME.frame.onnx beside it time lazy decoding). Default: the shipped " + ShippedModels.Default + ".",
             "Intra-op threads, for ONNX Runtime and (with --pytorch) torch alike.",
             1,
             "1 or more (the same count is given to torch)");
@@ -88,7 +88,7 @@ namespace DeltaInterpolator.Cli.Verbs
             if (repeats < 10) throw new CliErrors.UsageException($"inbetween speed: --repeats {repeats}; expected at least 10");
             string? root = RepositoryRoot();
             string? given = parse.GetValue(_model.Model);
-            string modelPath = given ?? (root == null ? "Runtime/Models/DeltaInterpolator-LaFAN1.onnx" : Path.Combine(root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx"));
+            string modelPath = given ?? (root == null ? ShippedModels.Find(ShippedModels.Default) : Path.Combine(root, ShippedModels.Default));
             if (given == null && !File.Exists(modelPath))
             {
                 throw new CliErrors.UsageException($"{modelPath}: the shipped model is not there; expected it after export (python3 -m deltainterp export), or pass --model FILE.onnx");
