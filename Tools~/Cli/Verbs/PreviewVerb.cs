@@ -123,10 +123,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     throw new CliErrors.UsageException($"{path}: the track name '{name}' is used twice; expected unique names (give one with --track NAME=FILE)");
                 }
 
-                if (!File.Exists(path))
-                {
-                    throw new CliErrors.UsageException($"{path}: no such file; expected a .bvh file");
-                }
+                InputFile.Check(path, "a .bvh file");
             }
 
             (int Start, int End)? range = ParseFrames(parse.GetValue(_frames));
@@ -138,13 +135,8 @@ namespace DeltaInterpolator.Cli.Verbs
             string? pngPath = parse.GetValue(_png);
             if (pngPath != null)
             {
-                string sheetPath = ContactSheet.OutputPathFor(pngPath);
-                if (string.Equals(Path.GetFullPath(sheetPath), Path.GetFullPath(htmlPath), StringComparison.Ordinal))
-                {
-                    throw new CliErrors.UsageException($"{pngPath}: the same file as --out; expected a different path for the contact sheet");
-                }
-
-                OutputFile.Check(sheetPath, force, inputs);
+                // The PNG and the SVG written instead when Chromium fails: both checked now, not after the work.
+                ContactSheet.CheckOutputs(pngPath, force, new[] { htmlPath }, inputs);
             }
 
             var clips = new List<(string Name, MotionClip Clip)>();
@@ -152,6 +144,8 @@ namespace DeltaInterpolator.Cli.Verbs
             foreach ((string name, string path) in requests)
             {
                 BvhAnimation animation = BvhReader.Read(path);
+                if (animation.Motion.FrameCount == 0) throw new CliErrors.UsageException($"{path}: has no frames (Frames: 0); expected at least one frame to show");
+                MotionChecks.RequireFinitePositions(animation.Motion, path, "the motion");
                 if (first == null)
                 {
                     first = animation;
@@ -287,7 +281,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private static int[] ParseKeys(string? text)
         {
             if (text == null) return Array.Empty<int>();
-            string[] parts = text.Split(',');
+            string[] parts = KeyListArgument.Text(text).Split(',');
             var keys = new int[parts.Length];
             for (int i = 0; i < parts.Length; i++)
             {
