@@ -235,6 +235,113 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(bake.Stdout, Does.Contain("\\x1b"));
         }
 
+        // 7 and 17. check printed the metadata's model name raw (ESC]0;… retitles the terminal) and unclipped
+        // (20 MB: 13.7 s, 730 MB, 32 MB of stdout).
+        [Test]
+        public void CheckShowsHostileModelNamesEscapedAndClipped()
+        {
+            using var temp = new TempFolder();
+            string tiny = Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures", "tiny-model.onnx");
+            foreach (string name in new[] { "evil\u001b]0;pwned\u0007\r\nforged", new string('N', 20_000_000) })
+            {
+                string model = temp["named.onnx"];
+                File.WriteAllBytes(model, WithModelName(File.ReadAllBytes(tiny), name));
+                var clock = Stopwatch.StartNew();
+                CliRun run = CliHarness.Run("check", model);
+                Assert.That(run.Stdout.Any(c => c != '\n' && c != '\r' && TerminalText.IsUnsafe(c)), Is.False, "raw control characters on stdout: " + run);
+                Assert.That(run.Stdout.Length, Is.LessThan(20_000), run.ToString());
+                Assert.That(clock.Elapsed.TotalSeconds, Is.LessThan(10));
+                if (name.StartsWith("evil", StringComparison.Ordinal)) Assert.That(run.Stdout, Does.Contain("\\x1b]0;pwned"), run.ToString());
+            }
+        }
+
+        /// <summary>The ONNX file with the "name" of its deltainterp metadata replaced (top-level protobuf fields copied, field 14 rebuilt).</summary>
+        private static byte[] WithModelName(byte[] onnx, string name)
+        {
+            var output = new MemoryStream();
+            int i = 0;
+            while (i < onnx.Length)
+            {
+                int start = i;
+                ulong tag = ReadVarint(onnx, ref i);
+                int field = (int)(tag >> 3), wire = (int)(tag & 7);
+                if (wire == 0)
+                {
+                    ReadVarint(onnx, ref i);
+                }
+                else if (wire == 2)
+                {
+                    int length = (int)ReadVarint(onnx, ref i);
+                    int body = i;
+                    i += length;
+                    if (field == 14)
+                    {
+                        // StringStringEntryProto: key (1), value (2).
+                        int j = body;
+                        string key = "", value = "";
+                        while (j < body + length)
+                        {
+                            ulong t = ReadVarint(onnx, ref j);
+                            int n = (int)ReadVarint(onnx, ref j);
+                            string text = Encoding.UTF8.GetString(onnx, j, n);
+                            j += n;
+                            if ((t >> 3) == 1) key = text; else value = text;
+                        }
+
+                        if (key == "deltainterp")
+                        {
+                            using var doc = System.Text.Json.JsonDocument.Parse(value);
+                            var members = doc.RootElement.EnumerateObject().ToDictionary(p => p.Name, p => (object)p.Value);
+                            members["name"] = name;
+                            value = System.Text.Json.JsonSerializer.Serialize(members);
+                            var entry = new MemoryStream();
+                            WriteBytes(entry, 1, Encoding.UTF8.GetBytes(key));
+                            WriteBytes(entry, 2, Encoding.UTF8.GetBytes(value));
+                            WriteBytes(output, 14, entry.ToArray());
+                            continue;
+                        }
+                    }
+                }
+                else
+                {
+                    throw new InvalidDataException($"wire type {wire} at the top level of an ONNX file");
+                }
+
+                output.Write(onnx, start, i - start);
+            }
+
+            return output.ToArray();
+        }
+
+        private static ulong ReadVarint(byte[] bytes, ref int i)
+        {
+            ulong value = 0;
+            for (int shift = 0; ; shift += 7)
+            {
+                byte b = bytes[i++];
+                value |= (ulong)(b & 0x7f) << shift;
+                if (b < 0x80) return value;
+            }
+        }
+
+        private static void WriteBytes(Stream stream, int field, byte[] bytes)
+        {
+            WriteVarint(stream, (ulong)(field << 3 | 2));
+            WriteVarint(stream, (ulong)bytes.Length);
+            stream.Write(bytes, 0, bytes.Length);
+        }
+
+        private static void WriteVarint(Stream stream, ulong value)
+        {
+            while (value >= 0x80)
+            {
+                stream.WriteByte((byte)(value | 0x80));
+                value >>= 7;
+            }
+
+            stream.WriteByte((byte)value);
+        }
+
         // 9. A command line past ~40 KB aborted ONNX Runtime (exit 134); keys come from a file instead.
         [Test]
         public void LongCommandLinesAreRefusedAndKeysComeFromAFile()
