@@ -183,7 +183,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string title = Path.GetFileName(requests[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
             PreviewScene scene = PreviewScene.FromClips(title, clips, sceneKeys, truth != null ? 0 : -1);
             PreviewWriter.WriteHtml(scene, htmlPath);
-            Console.WriteLine(string.Format(
+            SafeLine(string.Format(
                 CultureInfo.InvariantCulture,
                 "wrote {0} ({1:0} KB): {2} track{6}, {3} frames at {4:0.##} fps, {5} key frames",
                 htmlPath,
@@ -198,7 +198,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 for (int t = 0; t < scene.Tracks.Count; t++)
                 {
                     if (t == scene.GroundTruthTrack) continue;
-                    Console.WriteLine(string.Format(
+                    SafeLine(string.Format(
                         CultureInfo.InvariantCulture,
                         "  {0}: mean joint position error {1:0.###} (data units) {2}",
                         scene.Tracks[t].Name,
@@ -220,11 +220,14 @@ namespace DeltaInterpolator.Cli.Verbs
                     written = ContactSheet.Write(scene, pngPath, force, out fallback);
                 }
 
-                Console.WriteLine(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0));
+                SafeLine(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0));
             }
 
             return 0;
         }
+
+        /// <summary>One line on stdout with file and track names made terminal-safe (no raw escapes, no forged lines).</summary>
+        private static void SafeLine(string line) => Console.WriteLine(TerminalText.Safe(line, TerminalText.LineLength));
 
         private static (string Name, string Path) SplitTrack(string value, string defaultName, string option)
         {

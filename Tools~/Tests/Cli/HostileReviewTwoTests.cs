@@ -233,6 +233,10 @@ namespace DeltaInterpolator.Tests.Cli
             CliRun bake = CliHarness.Run("bake", evil, "--every", "40", "--out", temp["b.bvh"], "--model", Model, "--method", "slerp");
             CliHarness.AssertSuccess(bake);
             Assert.That(bake.Stdout, Does.Contain("\\x1b"));
+
+            CliRun preview = CliHarness.Run("preview", "--track", "T\u001b[2J=" + evil, "--out", temp["p\u001b]0;x\u0007.html"]);
+            CliHarness.AssertSuccess(preview);
+            Assert.That(preview.Stdout, Does.Contain("\\x1b]0;x\\x07"));
         }
 
         // 7 and 17. check printed the metadata's model name raw (ESC]0;… retitles the terminal) and unclipped
@@ -430,6 +434,13 @@ namespace DeltaInterpolator.Tests.Cli
             string huge = temp.Write("huge.json", "{" + string.Concat(Enumerable.Range(0, 200_000).Select(i => $"\"junk{i}\": \"x\",")) + "\"Hips\": \"Hips\"}");
             CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "retarget", input, "--to", "model", "--out", output, "--map", huge, "--model", Model), "at most");
             Assert.That(File.Exists(output), Is.False);
+
+            // 11: a blank key (or one of blank characters) is bad input naming the map.
+            foreach (string key in new[] { "", " ", "\u00a0", "\u2028" })
+            {
+                string blank = temp.Write("blank.json", "{\"" + key + "\": \"Hips\"}");
+                CliHarness.AssertOneErrorLine(CliHarness.Run("retarget", input, "--to", "model", "--out", output, "--map", blank, "--model", Model), "blank.json:1: ");
+            }
 
             // 21 for check: a folder is a folder.
             CliHarness.AssertOneErrorLine(CliHarness.Run("check", temp.Path), "is a directory");
