@@ -67,7 +67,7 @@ def _is_lafan1_folder(args) -> bool:
 def _run_prepare(args) -> int:
     if _is_lafan1_folder(args):
         from .data import prepare
-        safe_output.check(args.out, args.force, [args.stats])  # before reading any BVH
+        safe_output.check(args.out, args.force, [args.stats, *_bvh_files(args.data[0])])  # before reading any BVH
         pack = prepare(args.data[0], args.out, args.stats)
         print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
               f"{pack.skeleton.joint_count} joints")
@@ -221,6 +221,11 @@ def _evaluate_export_fixtures(sub) -> None:
                    help="LaFAN1 folder for the skeleton (optional: a built-in copy is used without it)")
 
 
+def _bvh_files(folder) -> List[str]:
+    """The *.bvh files of a --data folder (none for anything else): inputs no output may replace."""
+    return [str(p) for p in Path(folder).glob("*.bvh")] if folder and Path(folder).is_dir() else []
+
+
 def _refuse_non_finite(report: dict, data) -> None:
     """A NaN or infinity in the results is an error (exit 2), never a number in a table or a file."""
     for method, metrics in report.get("results", {}).items():
@@ -241,7 +246,7 @@ def _run_evaluate_export_fixtures(args) -> int:
         from .benchmark import format_table, run_benchmark
         from .checkpoint import load_checkpoint
         torch.set_num_threads(args.threads)
-        inputs = [args.checkpoint, args.stats]
+        inputs = [args.checkpoint, args.stats, *_bvh_files(args.data)]  # an output never replaces a --data BVH
         safe_output.check(args.json, args.force, inputs)  # before the benchmark runs, not after
         if args.plot:
             safe_output.check(args.plot, args.force, inputs + [args.json])

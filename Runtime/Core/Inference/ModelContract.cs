@@ -102,6 +102,12 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>Frames per second of the training data (0 when unknown): the rate a request's frames are at.</summary>
         public double TrainingFps { get; private set; }
 
+        /// <summary>The lowest <c>training.fps</c> a model may declare (frames per second).</summary>
+        public const double MinTrainingFps = 1;
+
+        /// <summary>The highest <c>training.fps</c> a model may declare (motion capture rarely exceeds 240 fps).</summary>
+        public const double MaxTrainingFps = 1000;
+
         /// <summary>What the model was trained on, as the exporter wrote it ("" when unknown).</summary>
         public string TrainingData { get; private set; } = "";
 
@@ -437,6 +443,13 @@ namespace DeltaInterpolator.Core.Inference
                 TrainingFutureFrames = tf.Range("future_frames");
                 TrainingMissingFrames = tf.Range("missing_frames");
                 TrainingFps = t.ContainsKey("fps") ? tf.Number("fps", "training.fps", 0) : 0;
+                if (t.ContainsKey("fps") && !(TrainingFps >= MinTrainingFps && TrainingFps <= MaxTrainingFps))
+                {
+                    // Retargeting resamples to this rate: 1e6 fps would turn a 7.5 s clip into 7.5 M frames.
+                    report.Error(Source, $"metadata training.fps is {Fmt(TrainingFps)}",
+                        $"expected a frame rate from {Fmt(MinTrainingFps)} to {Fmt(MaxTrainingFps)} fps (LaFAN1 and the shipped models: 30); export the checkpoint again");
+                    TrainingFps = 0;
+                }
                 TrainingData = t.TryGetValue("data", out JsonValue? data) ? tf.Guard(() => data.ExpectString("training.data"), "") : "";
             }
             else if (training != null)

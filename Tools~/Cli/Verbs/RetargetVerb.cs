@@ -162,6 +162,7 @@ namespace DeltaInterpolator.Cli.Verbs
             ReferencePose sourceReference = Reference(source, parse.GetValue(_referenceFrame), "--reference-frame", input);
             ReferencePose modelReference = ReferencePose.ModelTPose(contract.Skeleton);
             JointMap? userMap = mapPath == null ? null : JointMap.Load(mapPath, JointMap.Detect(source.Skeleton, contract.Skeleton));
+            if (userMap != null) MapWarnings.UnknownTargets(userMap, contract.Skeleton, mapPath!);
             SkeletonMap toModelMap = Map(sourceReference, modelReference, userMap, input, scale);
 
             MotionClip sourceMotion = Trim(source.Motion, fromFrame, inputFps, input);
@@ -172,7 +173,7 @@ namespace DeltaInterpolator.Cli.Verbs
             {
                 double frameTime = 1.0 / (fps ?? contract.FramesPerSecond);
                 // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the same rate, kept as written.
-                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime) : onModel;
+                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, input) : onModel;
                 result = ModelAnimation(resampled, output);
             }
             else
@@ -182,8 +183,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 fromModelMap = Map(otherReference, modelReference, userMap, to);
                 MotionClip otherPose = OneFrame(other.Skeleton, otherReference, source.Motion.FrameTime);
                 MotionClip onOther = fromModelMap.ToSource(onModel, otherPose);
-                if (inputFps.HasValue && !fps.HasValue) onOther = MotionResampler.Resample(onOther, source.Motion.FrameTime);
-                if (fps.HasValue) onOther = MotionResampler.Resample(onOther, 1.0 / fps.Value);
+                if (inputFps.HasValue && !fps.HasValue) onOther = MotionResampler.Resample(onOther, source.Motion.FrameTime, input);
+                if (fps.HasValue) onOther = MotionResampler.Resample(onOther, 1.0 / fps.Value, input);
                 result = new BvhAnimation(onOther, other.JointChannels, other.EndSites, output);
             }
 
@@ -218,7 +219,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private static void RequireFile(string path, string what)
         {
-            if (!File.Exists(path)) throw new CliErrors.UsageException($"{path}: no such file; expected {what}");
+            InputFile.Check(path, what); // a folder, a named pipe or a device is refused as such, before it is opened
         }
 
         private static ModelContract ReadContract(string modelPath)
@@ -301,7 +302,7 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
             table.AddRow("Made up (synthesized)", Markup.Escape(toModel.SynthesizedJoints.Count == 0 ? "none"
                 : string.Join(", ", toModel.SynthesizedJoints) + ": the input lacks them; each is a rigid child of its parent at the model's T-pose offset"));
-            table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
+            table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : MapWarnings.NameList(toModel.UnmappedSourceJoints)));
             table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "× {0:0.#####} {3}(model leg {1:0.##} ÷ input leg {2:0.###}: root height above the lowest joint in each reference pose)",
                 toModel.RootScale, toModel.TargetLegLength, toModel.SourceLegLength, scaleGiven ? "as given by --scale " : "")));
