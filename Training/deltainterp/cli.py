@@ -65,6 +65,12 @@ def _is_lafan1_folder(args) -> bool:
 
 
 def _run_prepare(args) -> int:
+    # Before any data is read: the output (existing without --force, or one of the named inputs) ...
+    safe_output.check(args.out, args.force, [args.stats] + [d for d in args.data if Path(d).is_file()])
+    # ... then statistics the user named (the LaFAN1 default is read only by the LaFAN1 path below).
+    if args.stats and args.stats != DEFAULT_STATS:
+        from .benchmark import load_statistics
+        load_statistics(args.stats)
     if _is_lafan1_folder(args):
         from .data import prepare
         safe_output.check(args.out, args.force, [args.stats, *_bvh_files(args.data[0])])  # before reading any BVH
