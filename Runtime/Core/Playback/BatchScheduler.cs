@@ -112,8 +112,15 @@ namespace DeltaInterpolator.Core.Playback
             for (int g = 0; g < _groupList.Count; g++)
             {
                 Group group = _groupList[g];
-                if (group.Scratch.Count == 0) continue;
-                spent += RunKeys(group, tokenBudget - spent, spent == 0);
+                // One run per MaxBatch rows (all of them in one run when batched).
+                while (group.Scratch.Count > 0 && group.KeysPending == null)
+                {
+                    int used = RunKeys(group, tokenBudget - spent, spent == 0);
+                    if (used == 0) break;
+                    spent += used;
+                    group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / (group.Past + 1)));
+                }
+
                 group.Scratch.Clear();
             }
 
@@ -140,8 +147,14 @@ namespace DeltaInterpolator.Core.Playback
                 for (int g = 0; g < _groupList.Count; g++)
                 {
                     Group group = _groupList[g];
-                    if (group.Scratch.Count == 0) continue;
-                    spent += RunFrames(group, tokenBudget - spent, spent == 0);
+                    while (group.Scratch.Count > 0 && group.FramePending == null)
+                    {
+                        int used = RunFrames(group, tokenBudget - spent, spent == 0);
+                        if (used == 0) break;
+                        spent += used;
+                        group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / FramesPerRun));
+                    }
+
                     group.Scratch.Clear();
                 }
 
