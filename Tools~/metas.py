@@ -33,7 +33,90 @@ IMPORTER_TAIL = """  externalObjects: {}
 """
 
 
-def meta_text(asset: str, is_folder: bool, guid: str) -> str:
+# Sentis (com.unity.ai.inference 2.4.0) imports .onnx with its ScriptedImporter, Editor/ONNX/ONNXModelImporter.cs,
+# whose script GUID is in ONNXModelImporter.cs.meta; its only serialized field is dynamicDimConfigs, one
+# {name, size: -1} per symbolic dimension in the order ONNXModelConverter meets them (graph inputs that are not
+# initializers, dimension by dimension). The metas of Sentis's own sample models have exactly this form.
+SENTIS_ONNX_IMPORTER_GUID = "f22407ba6b4157b4a93d0a670bd3dd57"
+
+
+def _varint(b: bytes, i: int) -> tuple[int, int]:
+    shift = value = 0
+    while True:
+        c = b[i]
+        i += 1
+        value |= (c & 0x7F) << shift
+        shift += 7
+        if c < 0x80:
+            return value, i
+
+
+def _fields(b: bytes):
+    """(field number, wire type, value) of one protobuf message; length-delimited values as bytes."""
+    i = 0
+    while i < len(b):
+        key, i = _varint(b, i)
+        number, wire = key >> 3, key & 7
+        if wire == 0:
+            value, i = _varint(b, i)
+        elif wire == 1:
+            value, i = b[i:i + 8], i + 8
+        elif wire == 2:
+            n, i = _varint(b, i)
+            value, i = b[i:i + n], i + n
+        elif wire == 5:
+            value, i = b[i:i + 4], i + 4
+        else:
+            raise ValueError(f"protobuf wire type {wire} not supported")
+        yield number, wire, value
+
+
+def onnx_symbolic_dims(data: bytes) -> list[str]:
+    """The dim_param names of an ONNX model's graph inputs, as Sentis's ONNXModelConverter collects them."""
+    graph = next((v for n, w, v in _fields(data) if n == 7 and w == 2), b"")
+    initializers = set()
+    inputs = []
+    for n, w, v in _fields(graph):
+        if n == 5 and w == 2:  # GraphProto.initializer: TensorProto, name = 8
+            initializers.update(x.decode() for m, _, x in _fields(v) if m == 8)
+        elif n == 11 and w == 2:  # GraphProto.input: ValueInfoProto
+            inputs.append(v)
+    names: list[str] = []
+    for value_info in inputs:
+        fields = list(_fields(value_info))
+        name = next((x.decode() for m, _, x in fields if m == 1), "")
+        if name in initializers:
+            continue
+        for m, _, type_proto in fields:
+            if m != 2:
+                continue
+            for t, _, tensor in _fields(type_proto):
+                if t != 1:  # TypeProto.tensor_type
+                    continue
+                for k, _, shape in _fields(tensor):
+                    if k != 2:  # TypeProto.Tensor.shape
+                        continue
+                    for d, _, dim in _fields(shape):
+                        if d != 1:  # TensorShapeProto.dim
+                            continue
+                        for q, _, param in _fields(dim):
+                            if q == 2 and param.decode() not in names:  # Dimension.dim_param
+                                names.append(param.decode())
+    return names
+
+
+def onnx_meta_body(path: str) -> str:
+    with open(path, "rb") as fh:
+        dims = onnx_symbolic_dims(fh.read())
+    body = ("ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n  serializedVersion: 2\n"
+            "  userData: \n  assetBundleName: \n  assetBundleVariant: \n"
+            f"  script: {{fileID: 11500000, guid: {SENTIS_ONNX_IMPORTER_GUID}, type: 3}}\n")
+    if not dims:
+        return body + "  dynamicDimConfigs: []\n"
+    return body + "  dynamicDimConfigs:\n" + "".join(f"  - name: {d}\n    size: -1\n" for d in dims)
+
+
+def meta_text(asset: str, is_folder: bool, guid: str, root: str = ".") -> str:
     """The .meta content Unity itself would write for this kind of asset."""
     head = f"fileFormatVersion: 2\nguid: {guid}\n"
     if is_folder:
@@ -52,7 +135,9 @@ def meta_text(asset: str, is_folder: bool, guid: str) -> str:
         return head + "PackageManifestImporter:\n" + IMPORTER_TAIL
     if ext in TEXT_EXTENSIONS:
         return head + "TextScriptImporter:\n" + IMPORTER_TAIL
-    # .onnx, .py and everything else: DefaultImporter (Sentis's ScriptedImporter takes over .onnx when installed).
+    if ext == ".onnx":
+        return head + onnx_meta_body(os.path.join(root, asset))
+    # .py and everything else: DefaultImporter.
     return head + "DefaultImporter:\n" + IMPORTER_TAIL
 
 
@@ -121,8 +206,29 @@ def main(argv: list[str] | None = None) -> int:
                 guid = uuid.uuid4().hex
             by_guid[guid].append(asset + ".meta")
             with open(os.path.join(root, asset + ".meta"), "w", encoding="utf-8", newline="\n") as fh:
-                fh.write(meta_text(asset, asset in folders, guid))
+                fh.write(meta_text(asset, asset in folders, guid, root))
             created.append(asset + ".meta")
+
+    # .onnx metas must be the ones Sentis's importer writes (the importer and the model's dynamic dimensions):
+    # rewritten in place, GUID kept, or reported by --check.
+    stale = []
+    for a in sorted(assets):
+        if not a.lower().endswith(".onnx") or a + ".meta" not in metas:
+            continue
+        path = os.path.join(root, a + ".meta")
+        with open(path, encoding="utf-8") as fh:
+            current = fh.read()
+        match = GUID_RE.search(current)
+        if not match:
+            continue
+        want = meta_text(a, False, match.group(1), root)
+        if current != want:
+            if args.check or not in_scope(a):
+                stale.append(a + ".meta")
+            else:
+                with open(path, "w", encoding="utf-8", newline="\n") as fh:
+                    fh.write(want)
+                print(f"rewrote   {a}.meta  (Sentis's ONNX importer, GUID kept)")
 
     for m in created:
         print(f"created   {m}")
@@ -133,13 +239,15 @@ def main(argv: list[str] | None = None) -> int:
         print(f"orphaned  {m}  (its asset is gone or git-ignored: delete the .meta, or restore the asset)")
     for m in no_guid:
         print(f"no guid   {m}")
+    for m in stale:
+        print(f"stale     {m}  (not the meta Sentis's ONNX importer writes; run: python3 Tools~/metas.py)")
     for g, ms in sorted(duplicates.items()):
         print(f"duplicate GUID {g}: {', '.join(ms)}  (give all but the oldest a new GUID)")
 
     still_missing = [a for a in missing if a + ".meta" not in created]
     if not args.check and still_missing:
         print(f"not created (outside the given paths): {len(still_missing)} .meta file(s)")
-    problems = (len(still_missing) if args.check or scopes else 0) + len(orphaned) + len(no_guid) + len(duplicates)
+    problems = (len(still_missing) if args.check or scopes else 0) + len(orphaned) + len(no_guid) + len(duplicates) + len(stale)
     checked = len(assets) + len(folders)
     if problems:
         print(f"metas: {problems} problem(s) in {checked} importable files and folders", file=sys.stderr)

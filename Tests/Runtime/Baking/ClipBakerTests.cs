@@ -203,7 +203,7 @@ namespace DeltaInterpolator.Tests.Baking
             return root;
         }
 
-        internal static void AssertSameFrame(MotionClip baked, int bakedFrame, MotionClip source, int sourceFrame)
+        public static void AssertSameFrame(MotionClip baked, int bakedFrame, MotionClip source, int sourceFrame)
         {
             int j = source.Skeleton.JointCount;
             for (int c = 0; c < 3 * j; c++)

@@ -1,6 +1,5 @@
 using System.IO;
 using System.Threading.Tasks;
-using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.IO;
 using NUnit.Framework;
@@ -16,7 +15,6 @@ namespace DeltaInterpolator.Tests.IO
             {
                 Assert.That(Assert.Throws<InputPathException>(() => InputFile.Check(fs["none.bvh"], "a .bvh file"))!.Message, Is.EqualTo(fs["none.bvh"] + ": no such file; expected a .bvh file"));
                 Assert.That(Assert.Throws<InputPathException>(() => BvhReader.Read(fs.Folder))!.Message, Is.EqualTo(fs.Folder + ": is a directory; expected a .bvh file"));
-                Assert.That(Assert.Throws<InputPathException>(() => BenchmarkStatistics.Load(fs.Folder))!.Message, Does.StartWith(fs.Folder + ": is a directory; expected a statistics JSON"));
                 InputFile.Check(fs.Write("a.bvh", "x"), "a .bvh file");
             }
         }

@@ -101,7 +101,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(t.LocalRotations, Is.EqualTo(first));
         }
 
-        internal static double MaxAbs(ReadOnlySpan<double> a, ReadOnlySpan<double> b, double signOfB = 1.0)
+        public static double MaxAbs(ReadOnlySpan<double> a, ReadOnlySpan<double> b, double signOfB = 1.0)
         {
             Assert.That(a.Length, Is.EqualTo(b.Length), "lengths");
             double worst = 0;
@@ -109,7 +109,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             return worst;
         }
 
-        internal static double MaxAbs(ReadOnlySpan<float> a, ReadOnlySpan<double> b)
+        public static double MaxAbs(ReadOnlySpan<float> a, ReadOnlySpan<double> b)
         {
             Assert.That(a.Length, Is.EqualTo(b.Length), "lengths");
             double worst = 0;

@@ -3,11 +3,13 @@ using System;
 namespace UnityEngine
 {
     // source: unity:Runtime/Export/Scripting/Attributes.cs
+    [AttributeUsage(AttributeTargets.Class, Inherited = false)]
     public sealed partial class DisallowMultipleComponent : Attribute
     {
     }
 
     // source: unity:Runtime/Export/Scripting/Attributes.cs
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
     public sealed partial class RequireComponent : Attribute
     {
         public RequireComponent(Type requiredComponent) => throw null!;
@@ -20,6 +22,7 @@ namespace UnityEngine
     }
 
     // source: unity:Runtime/Export/Scripting/Attributes.cs
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = false, Inherited = false)]
     public sealed partial class CreateAssetMenuAttribute : Attribute
     {
         public string menuName { get => throw null!; set => throw null!; }
@@ -35,11 +38,13 @@ namespace UnityEngine
     }
 
     // source: unity:Runtime/Export/PropertyDrawer/PropertyAttribute.cs
+    [AttributeUsage(AttributeTargets.Field | AttributeTargets.Property, Inherited = true, AllowMultiple = false)]
     public abstract partial class PropertyAttribute : Attribute
     {
     }
 
     // source: unity:Runtime/Export/PropertyDrawer/PropertyAttribute.cs
+    [AttributeUsage(AttributeTargets.All, Inherited = true, AllowMultiple = false)]
     public partial class TooltipAttribute : PropertyAttribute
     {
         public TooltipAttribute(string tooltip) => throw null!;

@@ -23,6 +23,7 @@ namespace UnityEngine
 namespace UnityEngine.Scripting
 {
     // source: unity:Runtime/Export/Scripting/PreserveAttribute.cs
+    [AttributeUsage(AttributeTargets.Method | AttributeTargets.Class | AttributeTargets.Field | AttributeTargets.Property | AttributeTargets.Constructor | AttributeTargets.Interface | AttributeTargets.Delegate | AttributeTargets.Event | AttributeTargets.Struct | AttributeTargets.Assembly | AttributeTargets.Enum, Inherited = false)]
     public partial class PreserveAttribute : Attribute
     {
     }
