@@ -45,6 +45,9 @@ namespace DeltaInterpolator.Cli.Verbs
             DefaultValueFactory = _ => 500,
         };
 
+        /// <summary>The largest crowd the benchmark builds (4 × the largest measured crowd).</summary>
+        private const int MaxCharacters = 1024;
+
         private readonly Option<int> _characters = new Option<int>("--characters")
         {
             Description = "characters of the crowd benchmark (all request a transition in the same frame; the JSON's \"crowd\" object); 0 skips it",
@@ -189,7 +192,8 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             int characters = parse.GetValue(_characters);
-            if (characters < 0) throw new CliErrors.UsageException($"inbetween speed: --characters {characters}; expected 0 (skip) or more");
+            // Bounded: each character holds its poses, history and decoder buffers (100,000 ran out of memory).
+            if (characters < 0 || characters > MaxCharacters) throw new CliErrors.UsageException($"inbetween speed: --characters {characters}; expected 0 (skip) to {MaxCharacters}");
             if (characters > 0 && model.SupportsLazyDecoding)
             {
                 AnsiConsole.MarkupLine(Markup.Escape($"Crowd: {characters} characters requesting a transition in the same frame..."));

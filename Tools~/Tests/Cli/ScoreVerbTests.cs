@@ -170,5 +170,20 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(nonFinite.ExitCode, Is.EqualTo(2), nonFinite.ToString());
             Assert.That(File.Exists(json), Is.False);
         }
+
+        [Test]
+        public void SpeedCharactersTakesHostileValuesAsBadInput()
+        {
+            // A crowd too large to build is refused before any work (100,000 characters ran out of memory).
+            string tiny = Path.Combine(Root, "Tests", "Fixtures", "tiny-model.onnx");
+            foreach (string value in new[] { "-1", "100000", "2147483647", "1e3" })
+            {
+                CliHarness.AssertOneErrorLine(CliHarness.RunWithin(60, "speed", "--characters", value, "--model", tiny, "--json", Path.Combine(_dir, "s.json")));
+            }
+
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(60, "speed", "--characters", "2", "--model", tiny, "--json", tiny, "--force"), "input");
+            string fifo = CliHarness.MakeFifo(Path.Combine(_dir, "speed.json"));
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(60, "speed", "--characters", "2", "--model", tiny, "--json", fifo));
+        }
 }
 }
