@@ -55,9 +55,11 @@ namespace DeltaInterpolator.Tests.Feet
         /// <c>slope · z</c>: each foot stands flat (toe on the ground, the foot as in the T-pose) for 60 % of a
         /// cycle of <paramref name="cycleSeconds"/> and swings in a low arc for the rest, the legs solved with
         /// analytic IK, the toes rigid (their T-pose rotation, as a synthesized toe). Left foot's cycle starts at
-        /// <paramref name="phase"/> (0..1), the right half a cycle later.
+        /// <paramref name="phase"/> (0..1), the right half a cycle later. With <paramref name="rollDegrees"/> the heel
+        /// lifts over the last 40 % of each stance, the foot pitching about its planted toe up to that angle (a rolling
+        /// foot), and levels again during the swing.
         /// </summary>
-        public static MotionClip Walk(Skeleton skeleton, int frames, double frameTime, double speed, double cycleSeconds = 1.0, double slope = 0, double phase = 0)
+        public static MotionClip Walk(Skeleton skeleton, int frames, double frameTime, double speed, double cycleSeconds = 1.0, double slope = 0, double phase = 0, double rollDegrees = 0)
         {
             ReferencePose pose = ReferencePose.ModelTPose(skeleton);
             int j = skeleton.JointCount;
@@ -88,28 +90,56 @@ namespace DeltaInterpolator.Tests.Feet
                     double n = Math.Floor(cycle), u = cycle - n;
                     // Planted at stance n where the T-pose puts the toe when the root is at its mid-stance position.
                     double midStance = (n + 0.5 * stance - phase - 0.5 * side) * cycleSeconds;
-                    double toeZ = speed * midStance + (toeRest.Z - pose.RootPosition.Z), lift = 0;
+                    double toeZ = speed * midStance + (toeRest.Z - pose.RootPosition.Z), lift = 0, roll;
                     if (u >= stance)
                     {
                         double s = (u - stance) / (1 - stance);
                         toeZ += s * s * (3 - 2 * s) * stride;
                         lift = 0.08 * rig.LegLength * Math.Sin(Math.PI * s);
+                        roll = 1 - s * s * (3 - 2 * s);
+                    }
+                    else
+                    {
+                        double r = Math.Max(0, (u - 0.6 * stance) / (0.4 * stance));
+                        roll = r * r;
                     }
 
+                    // Heel up about the toe: a turn about the lateral axis (+X) pitches the foot's toe down.
+                    QuaternionD pitch = Quaternions.FromAxisAngle(Vector3D.UnitX, roll * rollDegrees * Math.PI / 180);
+
                     var toe = new Vector3D(toeRest.X, toeRest.Y + slope * toeZ + lift, toeZ);
-                    Vector3D ankleTarget = toe + (ankleRest - toeRest);
+                    Vector3D ankleTarget = toe + Quaternions.Apply(pitch, ankleRest - toeRest);
                     Vector3D hip = Vector3D.Read(gp, 3 * leg.Hip), knee = Vector3D.Read(gp, 3 * leg.Knee), ankle = Vector3D.Read(gp, 3 * leg.Ankle);
                     TwoBoneIk.Solve(hip, knee, ankle, QuaternionD.Read(gr, 4 * leg.Hip), QuaternionD.Read(gr, 4 * leg.Knee), ankleTarget, Vector3D.UnitZ,
                         out QuaternionD newHip, out QuaternionD newKnee);
                     QuaternionD parent = QuaternionD.Read(gr, 4 * skeleton.Parents[leg.Hip]);
                     Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(parent), newHip)).Write(lr, 4 * leg.Hip);
                     Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newHip), newKnee)).Write(lr, 4 * leg.Knee);
-                    Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newKnee), pose.GlobalRotation(leg.Ankle))).Write(lr, 4 * leg.Ankle);
+                    QuaternionD foot = Quaternions.Multiply(pitch, pose.GlobalRotation(leg.Ankle));
+                    Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newKnee), foot)).Write(lr, 4 * leg.Ankle);
                 }
             }
 
             Quaternions.FixContinuity(rotations, frames, j);
             return new MotionClip(skeleton, frames, frameTime, positions, rotations);
+        }
+
+        /// <summary>Solves one leg of one frame of <paramref name="clip"/> (in place) so that its ankle reaches <paramref name="ankle"/>, the foot's global orientation kept.</summary>
+        public static void Reach(MotionClip clip, int frame, Leg leg, Vector3D ankle)
+        {
+            Skeleton s = clip.Skeleton;
+            int j = s.JointCount;
+            var gp = new double[3 * j];
+            var gr = new double[4 * j];
+            Span<double> lr = clip.LocalRotations.AsSpan(frame * j * 4, j * 4);
+            ReadOnlySpan<double> lp = clip.LocalPositions.AsSpan(frame * j * 3, j * 3);
+            ForwardKinematics.ComputeFrame(s.ParentSpan, lp, Vector3D.Read(lp, 0), lr, gp, gr);
+            QuaternionD foot = QuaternionD.Read(gr, 4 * leg.Ankle);
+            TwoBoneIk.Solve(Vector3D.Read(gp, 3 * leg.Hip), Vector3D.Read(gp, 3 * leg.Knee), Vector3D.Read(gp, 3 * leg.Ankle),
+                QuaternionD.Read(gr, 4 * leg.Hip), QuaternionD.Read(gr, 4 * leg.Knee), ankle, Vector3D.UnitZ, out QuaternionD hip, out QuaternionD knee);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(QuaternionD.Read(gr, 4 * s.Parents[leg.Hip])), hip)).Write(lr, 4 * leg.Hip);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(hip), knee)).Write(lr, 4 * leg.Knee);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(knee), foot)).Write(lr, 4 * leg.Ankle);
         }
 
         /// <summary>Global positions of every joint on every frame (frames × joints × 3).</summary>
