@@ -28,8 +28,24 @@ namespace DeltaInterpolator.Cli
             new SpeedVerb(),
         };
 
+        /// <summary>The longest command line accepted (all arguments and the spaces between them).</summary>
+        public const int MaxCommandLineCharacters = 16_000;
+
         public static int Main(string[] args)
         {
+            InterruptCleanup.Install();
+            TerminalSafeHook.AttachTo(Spectre.Console.AnsiConsole.Console);
+            long characters = 0;
+            foreach (string arg in args) characters += arg.Length + 1;
+            if (characters > MaxCommandLineCharacters)
+            {
+                // Past ~40 KB, starting ONNX Runtime aborted the process (exit 134); no verb needs that much.
+                CliErrors.WriteLine(string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                    "inbetween: the command line is {0:N0} characters long; expected at most {1:N0} (give a long key list from a file: --keys @FILE)",
+                    characters, MaxCommandLineCharacters));
+                return CliErrors.BadInput;
+            }
+
             // Tables written to a file or a pipe stay plain text (no colour escape codes).
             if (Console.IsOutputRedirected)
             {
@@ -48,19 +64,44 @@ namespace DeltaInterpolator.Cli
                 "Run 'inbetween VERB --help' for a verb's options.");
             foreach (ICliVerb verb in Verbs) root.Subcommands.Add(verb.CreateCommand());
 
-            ParseResult parse = root.Parse(args);
+            // No response files: System.CommandLine would expand any "@FILE" argument by reading the file (a named
+            // pipe blocks forever, /dev/zero never ends); --keys @FILE is read by the verb through the safe input path.
+            ParseResult parse = root.Parse(args, new ParserConfiguration { ResponseFileTokenReplacer = null });
             if (parse.Errors.Count > 0)
             {
                 string verb = parse.CommandResult.Command is RootCommand ? "inbetween" : "inbetween " + parse.CommandResult.Command.Name;
                 // An unknown word explains more than the "required command" error it also causes.
                 System.CommandLine.Parsing.ParseError first = parse.Errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? parse.Errors[0];
-                string message = first.Message.TrimEnd('.');
+                string message = FriendlyTypeNames(first.Message).TrimEnd('.');
                 CliErrors.WriteLine($"{verb}: {message}; expected valid arguments (see '{verb} --help')");
                 return CliErrors.BadInput;
             }
 
             var invocation = new InvocationConfiguration { EnableDefaultExceptionHandler = false };
             return CliErrors.Guard(() => parse.Invoke(invocation));
+        }
+
+        /// <summary>
+        /// A parser message with .NET type names (<c>System.Nullable`1[System.Int32]</c>) said in words
+        /// ("a whole number"), as a user reads the option's help.
+        /// </summary>
+        internal static string FriendlyTypeNames(string message)
+        {
+            return System.Text.RegularExpressions.Regex.Replace(message.Replace("as expected type ", "as "), @"'?System\.Nullable`1\[(System\.[A-Za-z0-9]+)\]'?|'?(System\.[A-Za-z0-9]+(\[\])?)'?", m =>
+            {
+                string type = m.Groups[1].Success ? m.Groups[1].Value : m.Groups[2].Value;
+                switch (type)
+                {
+                    case "System.Int32":
+                    case "System.Int64": return "a whole number";
+                    case "System.Double":
+                    case "System.Single": return "a number";
+                    case "System.Boolean": return "true or false";
+                    case "System.String":
+                    case "System.String[]": return "text";
+                    default: return m.Value;
+                }
+            });
         }
 
         /// <summary>

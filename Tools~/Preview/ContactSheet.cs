@@ -31,6 +31,48 @@ namespace DeltaInterpolator.Preview
         }
 
         /// <summary>
+        /// Before any work, both places a sheet asked for at <paramref name="pngPath"/> may land — the PNG
+        /// and the SVG written instead when Chromium is missing or fails — must be writable (an existing
+        /// one only with <paramref name="force"/>), neither may be one of the command's
+        /// <paramref name="inputs"/>, nor one of its <paramref name="otherOutputs"/> (e.g. the HTML page).
+        /// </summary>
+        /// <exception cref="OutputPathException">Either path must not be written.</exception>
+        public static void CheckOutputs(string pngPath, bool force, System.Collections.Generic.IEnumerable<string> otherOutputs, System.Collections.Generic.IEnumerable<string?> inputs)
+        {
+            if (pngPath == null) throw new ArgumentNullException(nameof(pngPath));
+            string svgPath = Path.ChangeExtension(pngPath, ".svg");
+            var others = new System.Collections.Generic.List<string>();
+            foreach (string o in otherOutputs) others.Add(Path.GetFullPath(o));
+            var paths = new System.Collections.Generic.List<string>(2) { OutputPathFor(pngPath) };
+            if (!string.Equals(Path.GetFullPath(pngPath), Path.GetFullPath(svgPath), StringComparison.Ordinal))
+            {
+                paths.Add(string.Equals(paths[0], pngPath, StringComparison.Ordinal) ? svgPath : pngPath);
+            }
+
+            foreach (string path in paths)
+            {
+                string role = string.Equals(path, svgPath, StringComparison.Ordinal) && !string.Equals(path, pngPath, StringComparison.Ordinal)
+                    ? $"the SVG written instead of {pngPath} when Chromium is missing or fails" : "the contact sheet";
+                foreach (string other in others)
+                {
+                    if (string.Equals(Path.GetFullPath(path), other, OperatingSystem.IsWindows() || OperatingSystem.IsMacOS() ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal))
+                    {
+                        throw new OutputPathException(path, $"is {role} and also another output of this command", "expected a --png path whose .png and .svg differ from the other outputs");
+                    }
+                }
+
+                try
+                {
+                    OutputFile.Check(path, force, inputs);
+                }
+                catch (OutputPathException e) when (!string.Equals(path, paths[0], StringComparison.Ordinal))
+                {
+                    throw new OutputPathException(path, $"{e.Problem} ({role})", e.Expected);
+                }
+            }
+        }
+
+        /// <summary>
         /// Writes the sheet as PNG when Chromium is installed and starts, else as SVG beside it (same
         /// name, extension <c>.svg</c>), through <see cref="OutputFile"/>. Check
         /// <see cref="OutputPathFor"/> before the work; an SVG written because Chromium failed to start

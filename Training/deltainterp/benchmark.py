@@ -55,10 +55,13 @@ def load_statistics(path: str | Path) -> Statistics:
     path = Path(path)
     if not path.exists():
         raise FileNotFoundError(f"{path}: statistics file not found; expected LaFAN1's train_stats_official.json")
+    from .safe_input import check_regular
+    check_regular(path, "LaFAN1's train_stats_official.json")  # a named pipe would block the read
     try:
         s = json.loads(path.read_text())
-    except ValueError as e:  # not JSON, or not UTF-8: name the file
-        raise ValueError(f"{path}: not JSON ({e}); expected LaFAN1's train_stats_official.json") from None
+    except (ValueError, RecursionError) as e:  # not JSON, not UTF-8, nested too deeply: name the file
+        detail = " ".join(str(e).split())[:120] if not isinstance(e, RecursionError) else "nested too deeply"
+        raise ValueError(f"{path}: not JSON ({detail}); expected LaFAN1's train_stats_official.json") from None
     for key in ("x_mean", "x_std", "offsets"):
         if not isinstance(s, dict) or key not in s:
             raise ValueError(f"{path}: missing '{key}'; expected LaFAN1's train_stats_official.json "

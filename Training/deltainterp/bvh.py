@@ -38,6 +38,8 @@ _CHANNELS = {"xposition", "yposition", "zposition", "xrotation", "yrotation", "z
 
 
 def read_bvh(path: str | Path, fix_continuity: bool = True) -> Motion:
+    from .safe_input import check_regular
+    check_regular(path, "a BVH motion file")  # a named pipe would block the reader, /dev/zero never ends
     try:
         return _read_bvh(path, fix_continuity)
     except BvhFormatError:
@@ -147,7 +149,11 @@ def _read_bvh(path: str | Path, fix_continuity: bool = True) -> Motion:
 def subject_of(path: str | Path) -> int:
     """LaFAN1 file names are <theme><take>_subject<k>.bvh."""
     stem = Path(path).stem
-    return int(stem.split("_")[-1].replace("subject", ""))
+    tail = stem.split("_")[-1]
+    if not (tail.startswith("subject") and tail[len("subject"):].isdigit()):
+        raise ValueError(f"{path}: the name does not end in _subject<k>; expected LaFAN1 names "
+                         "<theme><take>_subject<k>.bvh here (`prepare` takes any humanoid BVH folder or a data manifest)")
+    return int(tail[len("subject"):])
 
 
 def lafan1_files(data_dir: str | Path, subjects: Tuple[int, ...]) -> List[Path]:

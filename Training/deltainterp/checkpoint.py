@@ -226,7 +226,7 @@ def read_checkpoint(path: str | Path) -> Dict[str, Any]:
         tensors = list(raw["tensors"])
         state = _decode(json.loads(raw["meta"]), tensors)
         state["model"] = raw["model"]
-    except (KeyError, TypeError, ValueError, IndexError) as e:
+    except (KeyError, TypeError, ValueError, IndexError, RecursionError) as e:  # RecursionError: 3,000-deep JSON
         raise CheckpointError(path, f"has a damaged header ({type(e).__name__}: {str(e)[:120]})")
     return state
 

@@ -65,9 +65,15 @@ def _is_lafan1_folder(args) -> bool:
 
 
 def _run_prepare(args) -> int:
+    # Before any data is read: the output (existing without --force, or one of the named inputs) ...
+    safe_output.check(args.out, args.force, [args.stats] + [d for d in args.data if Path(d).is_file()])
+    # ... then statistics the user named (the LaFAN1 default is read only by the LaFAN1 path below).
+    if args.stats and args.stats != DEFAULT_STATS:
+        from .benchmark import load_statistics
+        load_statistics(args.stats)
     if _is_lafan1_folder(args):
         from .data import prepare
-        safe_output.check(args.out, args.force, [args.stats])  # before reading any BVH
+        safe_output.check(args.out, args.force, [args.stats, *_bvh_files(args.data[0])])  # before reading any BVH
         pack = prepare(args.data[0], args.out, args.stats)
         print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
               f"{pack.skeleton.joint_count} joints")
@@ -200,13 +206,17 @@ def _evaluate_export_fixtures(sub) -> None:
         "export", help="export a checkpoint to ONNX: whole graph + lazy keys/frame graphs",
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Writes OUT (the whole transition) and, beside it, .keys.onnx and .frame.onnx graphs "
-                    "(lazy decoding;\nout/m.onnx → out/m.keys.onnx, out/m.frame.onnx), opset 15, batch 1, dynamic frame axes, with the contract's constant outputs and "
+                    "(lazy decoding;\nout/m.onnx → out/m.keys.onnx, out/m.frame.onnx), opset 15, a batch axis, dynamic frame axes, with the contract's constant outputs and "
                     "metadata\n(Documentation~/model-contract.md). Fails when a graph holds an operator that "
                     "Sentis 2.x or\nBarracuda cannot import (deltainterp/operators.py), or when the numpy "
                     "evaluation of a written\ngraph differs from torch by more than 1e-5.\n"
                     "Example:\n  PYTHONPATH=Training python3 -m deltainterp export "
-                    "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx")
-    p.add_argument("--checkpoint", required=True, help="checkpoint.pt from `train`")
+                    "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx\n"
+                    "Re-export a shipped model in the current contract (weights read back from its whole graph):\n"
+                    "  PYTHONPATH=Training python3 -m deltainterp export --checkpoint "
+                    "Runtime/Models/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
+    p.add_argument("--checkpoint", required=True,
+                   help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")
     p.add_argument("--out", required=True, help="output path ending in .onnx")
     p.add_argument("--name", default="DeltaInterpolator-LaFAN1", help="model name in the metadata")
     p.add_argument("--force", action="store_true", help="replace existing OUT, .keys.onnx and .frame.onnx files")
@@ -219,6 +229,11 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--out", default="Tests/Fixtures", help="output folder (default Tests/Fixtures)")
     p.add_argument("--data", default=DEFAULT_DATA,
                    help="LaFAN1 folder for the skeleton (optional: a built-in copy is used without it)")
+
+
+def _bvh_files(folder) -> List[str]:
+    """The *.bvh files of a --data folder (none for anything else): inputs no output may replace."""
+    return [str(p) for p in Path(folder).glob("*.bvh")] if folder and Path(folder).is_dir() else []
 
 
 def _refuse_non_finite(report: dict, data) -> None:
@@ -241,7 +256,7 @@ def _run_evaluate_export_fixtures(args) -> int:
         from .benchmark import format_table, run_benchmark
         from .checkpoint import load_checkpoint
         torch.set_num_threads(args.threads)
-        inputs = [args.checkpoint, args.stats]
+        inputs = [args.checkpoint, args.stats, *_bvh_files(args.data)]  # an output never replaces a --data BVH
         safe_output.check(args.json, args.force, inputs)  # before the benchmark runs, not after
         if args.plot:
             safe_output.check(args.plot, args.force, inputs + [args.json])
@@ -269,7 +284,11 @@ def _run_evaluate_export_fixtures(args) -> int:
         torch.set_num_threads(1)
         for path in graph_paths(args.out).values():
             safe_output.check(path, args.force, [args.checkpoint])
-        loaded = load_checkpoint(args.checkpoint)
+        if args.checkpoint.endswith(".onnx"):
+            from .warm_start import load_exported_model
+            loaded = load_exported_model(args.checkpoint)
+        else:
+            loaded = load_checkpoint(args.checkpoint)
         report = export_model(loaded, args.out, args.name)
         print(f"{args.name}: {report.parameters:,} parameters, opset 15, checked against torch "
               f"(max |diff| {report.max_difference:.2g})")

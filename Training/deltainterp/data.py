@@ -79,12 +79,24 @@ def save_pack(pack: MotionPack, path: str) -> None:
     """Writes the pack to exactly `path` through a temporary file beside it (safe_output; the caller
     checks the path, --force, before reading any BVH)."""
     from . import safe_output
+    _refuse_non_finite(pack)
     safe_output.write(path, lambda f: np.savez_compressed(
         f, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files), starts=pack.starts,
         root_positions=pack.root_positions, local_quaternions=pack.local_quaternions,
         frame_time=pack.frame_time,
         augmented=pack.augmented if pack.augmented is not None else np.zeros(len(pack.files), dtype=bool),
         description=np.array(pack.description)))
+
+
+def _refuse_non_finite(pack: MotionPack) -> None:
+    """NaN or infinity (also a finite 1e308 that float32 turns into infinity) is refused naming its file, never
+    packed for `train` to reject as "not a pack"."""
+    for i, name in enumerate(pack.files):
+        a, b = pack.file_frames(i)
+        bad = ~(np.isfinite(pack.root_positions[a:b]).all(axis=1) & np.isfinite(pack.local_quaternions[a:b]).all(axis=(1, 2)))
+        if bad.any():
+            raise ValueError(f"{name}: frame {int(np.argmax(bad))} holds NaN or infinite values (or values beyond "
+                             "float32, e.g. 1e308); expected finite motion (nothing was written)")
 
 
 PACK_EXPECTED = "expected a pack written by `python3 -m deltainterp prepare`"

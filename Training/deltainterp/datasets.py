@@ -211,6 +211,8 @@ def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]
 
 
 def _frame_time(path: Path) -> float:
+    from .safe_input import check_regular
+    check_regular(path, "a BVH file")  # a named pipe would block the read
     with open(path, "r", encoding="utf-8", errors="replace") as f:
         for i, line in enumerate(f):
             if line.strip().lower().startswith("frame time:"):

@@ -94,16 +94,55 @@ def write(path: PathLike, writer: Callable[[BinaryIO], None]) -> Path:
     full = Path(os.path.abspath(path))
     full.parent.mkdir(parents=True, exist_ok=True)
     temporary = temporary_name(full)
+    previous = _exit_on_terminate()
     try:
         with open(temporary, "xb") as f:
             writer(f)
             f.flush()
             os.fsync(f.fileno())
         _rename(temporary, full)
-    except BaseException:  # KeyboardInterrupt too: never leave our temporary file behind
+    except BaseException:  # KeyboardInterrupt (SIGINT) and SystemExit (SIGTERM, below) too: never leave it behind
         _try_delete(temporary)
         raise
+    finally:
+        _restore(previous)
     return full
+
+
+def _exit_on_terminate():
+    """While a write is under way, SIGTERM and SIGHUP raise SystemExit (143, 129) instead of ending the process
+    at once, so the `except` above deletes the temporary file (SIGINT already raises KeyboardInterrupt).
+    Only the main thread may set handlers; elsewhere this does nothing. Returns what to restore."""
+    import signal
+    import threading
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    previous = {}
+    for name in ("SIGTERM", "SIGHUP"):
+        number = getattr(signal, name, None)
+        if number is None:
+            continue
+        current = signal.getsignal(number)
+        if current not in (signal.SIG_DFL, None):
+            continue  # the program has its own handler: leave it
+        try:
+            previous[number] = signal.signal(number, _raise_exit)
+        except (ValueError, OSError):
+            pass
+    return previous
+
+
+def _raise_exit(number, frame) -> None:
+    raise SystemExit(128 + number)
+
+
+def _restore(previous) -> None:
+    import signal
+    for number, handler in (previous or {}).items():
+        try:
+            signal.signal(number, handler)
+        except (ValueError, OSError):
+            pass
 
 
 def _rename(temporary: Path, target: Path) -> None:

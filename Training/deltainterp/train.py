@@ -257,6 +257,14 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     out.mkdir(parents=True, exist_ok=True)
     pack = load_pack(cfg.data)
     train_starts, val_starts = split_windows(pack)
+    if len(train_starts) == 0:
+        longest = max((int(b - a) for a, b in (pack.file_frames(i) for i in range(len(pack.files)))), default=0)
+        raise ValueError(f"{cfg.data}: no 50-frame training window in the first 90 % of any file (the longest has "
+                         f"{longest} frames); expected files of at least 57 frames")
+    if len(val_starts) == 0 and rank == 0 and progress:
+        # A small pack (e.g. 2 files of 200 frames) has no 65-frame tail to validate on: train anyway.
+        print(f"warning: {cfg.data}: no 65-frame validation window in the last 10 % of any file (files of 660 "
+              "frames or more have one); training without validation")
     skeleton = skeleton_tensors(pack, cfg.unit_scale, device)
     model_cfg = preset(cfg.preset, joints=pack.skeleton.joint_count, **cfg.model_overrides)
     if state is not None:
@@ -379,7 +387,7 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             w.writerow(row)
             safe_output.append_text(log_path, text.getvalue())  # whole file via temp + rename
             window_losses.clear()
-        if rank == 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
+        if rank == 0 and len(val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             last_val = validation_metrics(model, pack, val_starts, skeleton)
             for p in VALIDATION_SHORT_PASTS if cfg.min_past < 10 else ():
                 short = validation_metrics(model, pack, val_starts, skeleton, past=p)

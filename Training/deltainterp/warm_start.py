@@ -21,6 +21,7 @@ import numpy as np
 import torch
 
 from . import contract as C
+from .safe_input import InputPathError, load_onnx
 from .model import DeltaInterpolator, ModelConfig
 
 
@@ -28,7 +29,7 @@ class WarmStartError(ValueError):
     """The ONNX file does not hold a network of the requested architecture."""
 
 
-def _probe_mapping(config: ModelConfig) -> Dict[Tuple[str, int], Tuple[str, bool]]:
+def _probe_mapping(config: ModelConfig, batched: bool = True) -> Dict[Tuple[str, int], Tuple[str, bool]]:
     """(node name, input position) → (parameter name, transposed) for the whole graph of this architecture.
 
     Keyed by where a tensor is USED rather than by initializer name: the exporter merges initializers
@@ -44,12 +45,13 @@ def _probe_mapping(config: ModelConfig) -> Dict[Tuple[str, int], Tuple[str, bool
         for i, (_, p) in enumerate(model.named_parameters()):
             rows = torch.arange(p.shape[0], dtype=p.dtype).reshape(-1, *([1] * (p.dim() - 1)))
             p.copy_((1000.0 * (i + 1) + rows).expand_as(p))
-    spec = next(s for s in graph_specs(model) if s.kind == "whole")
-    inputs = example_inputs(model, "whole")
+    # the same layout as the file's (contract version 1: batch 1; 2: a batch axis), as export traces it
+    spec = next(s for s in graph_specs(model, batched) if s.kind == "whole")
+    inputs = example_inputs(model, "whole", gap=[5, 7] if batched else 5, batched=batched)
     buffer = io.BytesIO()
     with torch.no_grad(), warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        _torch_onnx_export(WholeGraph(model).eval(), tuple(inputs[n] for n in spec.input_names), buffer, spec)
+        _torch_onnx_export(WholeGraph(model, batched).eval(), tuple(inputs[n] for n in spec.input_names), buffer, spec)
     proto = onnx.load_from_string(buffer.getvalue())
     shapes = dict((n, tuple(p.shape)) for n, p in model.named_parameters())
     by_initializer: Dict[str, Tuple[str, bool]] = {}
@@ -74,6 +76,15 @@ def _probe_mapping(config: ModelConfig) -> Dict[Tuple[str, int], Tuple[str, bool
             for i, x in enumerate(node.input) if x in by_initializer}
 
 
+def _load(path: Path):
+    """The model at `path`: a regular file only (a named pipe would block), no external data (an initializer
+    at `../../dev/zero` reads forever, one at `/etc/passwd` reads a file outside the model's folder)."""
+    try:
+        return load_onnx(path)
+    except InputPathError as e:
+        raise WarmStartError(str(e)) from None
+
+
 def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 1e-5) -> Dict[str, torch.Tensor]:
     """The state dict of `config`'s network as stored in the whole graph at `path`, checked by running both."""
     import onnx
@@ -82,13 +93,9 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
     from .onnx_reference import run_model
 
     path = Path(path)
-    if not path.is_file():
-        raise WarmStartError(f"{path}: not a file; expected an exported whole graph (.onnx)")
-    try:
-        proto = onnx.load(str(path))
-    except Exception as e:  # a protobuf decode error names no file
-        raise WarmStartError(f"{path}: not an ONNX model ({type(e).__name__}); expected an exported whole graph")
-    mapping = _probe_mapping(config)
+    proto = _load(path)
+    batched = _is_batched(proto)
+    mapping = _probe_mapping(config, batched)
     model = DeltaInterpolator(config).eval()
     state = {k: v.clone() for k, v in model.state_dict().items()}
     found = set()
@@ -114,9 +121,9 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
                              f"expected a whole graph of width {config.width}, {config.blocks} blocks")
     model.load_state_dict(state)
     for keys, queries, gap in ((11, 5, 5), (2, 17, 17)):
-        feeds = example_inputs(model, "whole", keys, queries, gap, seed=keys + queries)
+        feeds = example_inputs(model, "whole", keys, queries, gap, seed=keys + queries, batched=batched)
         with torch.no_grad():
-            want = WholeGraph(model)(*feeds.values())
+            want = WholeGraph(model, batched)(*feeds.values())
         got = run_model(proto, {k: v.numpy() for k, v in feeds.items()})
         for i, out in enumerate((C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA)):
             diff = float(np.abs(got[out] - want[i].numpy()).max())
@@ -124,6 +131,14 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
                 raise WarmStartError(f"{path}: rebuilt network differs from the file by {diff:.3g} in {out}; "
                                      f"expected ≤ {tolerance} (another architecture?)")
     return state
+
+
+def _is_batched(proto) -> bool:
+    """True for a contract version ≥ 2 graph (a batch axis: `gap_length` is [B], key frame indices [B, K])."""
+    for value in proto.graph.input:
+        if value.name == C.KEY_FRAME_INDICES:
+            return len(value.type.tensor_type.shape.dim) == 2
+    return True
 
 
 def load_exported_model(path: str | Path):
@@ -136,24 +151,35 @@ def load_exported_model(path: str | Path):
     from .skeleton import Skeleton
 
     path = Path(path)
-    try:
-        proto = onnx.load(str(path), load_external_data=False)
-    except Exception as e:
-        raise WarmStartError(f"{path}: not an ONNX model ({type(e).__name__}); expected an exported whole graph")
+    proto = _load(path)
     entries = {p.key: p.value for p in proto.metadata_props}
     if "deltainterp" not in entries:
         raise WarmStartError(f"{path}: no 'deltainterp' metadata; expected a graph written by `export`")
-    meta = json.loads(entries["deltainterp"])
-    skeleton = Skeleton.from_json(meta["skeleton"])
-    arch = meta["architecture"]
-    config = ModelConfig(joints=skeleton.joint_count, width=arch["width"], blocks=arch["blocks"], heads=arch["heads"],
-                         embedding_dim=arch["embedding_dim"], embedding_size=arch["embedding_size"],
-                         output_delta_mode=meta["output_delta_mode"], input_delta_mode=meta["input_delta_mode"])
+    try:
+        meta = json.loads(entries["deltainterp"])
+        skeleton = Skeleton.from_json(meta["skeleton"])
+        arch = meta["architecture"]
+        sizes = {k: arch[k] for k in ("width", "blocks", "heads", "embedding_dim", "embedding_size")}
+        for key, value in sizes.items():
+            if not isinstance(value, int) or isinstance(value, bool) or not 1 <= value <= 1 << 16:
+                raise ValueError(f"architecture.{key} is {str(value)[:40]}")
+        if sizes["width"] % sizes["heads"]:
+            raise ValueError(f"architecture.width {sizes['width']} is not a multiple of heads {sizes['heads']}")
+        config = ModelConfig(joints=skeleton.joint_count, width=sizes["width"], blocks=sizes["blocks"],
+                             heads=sizes["heads"], embedding_dim=sizes["embedding_dim"],
+                             embedding_size=sizes["embedding_size"],
+                             output_delta_mode=meta["output_delta_mode"], input_delta_mode=meta["input_delta_mode"])
+        training = meta.get("training", {})
+        min_past = int(training.get("past_frames", [10, 10])[0])
+        fps = float(training.get("fps", 30.0))
+        unit_scale = float(meta["unit_scale"])
+        axes = tuple(meta["facing_local_axis"]), tuple(meta["facing_target_axis"])
+        data = str(training.get("data", ""))
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError, RecursionError, AssertionError) as e:
+        detail = " ".join(str(e).split())[:120] if not isinstance(e, RecursionError) else "nested too deeply"
+        raise WarmStartError(f"{path}: its 'deltainterp' metadata is not what `export` writes ({type(e).__name__}: "
+                             f"{detail}); expected a graph written by `python3 -m deltainterp export`") from None
     model = DeltaInterpolator(config)
     model.load_state_dict(load_onnx_weights(path, config))
     model.eval()
-    training = meta.get("training", {})
-    return LoadedModel(model, skeleton, float(meta["unit_scale"]), 0,
-                       {"min_past": int(training.get("past_frames", [10, 10])[0])}, {},
-                       tuple(meta["facing_local_axis"]), tuple(meta["facing_target_axis"]),
-                       float(training.get("fps", 30.0)), str(training.get("data", "")))
+    return LoadedModel(model, skeleton, unit_scale, 0, {"min_past": min_past}, {}, axes[0], axes[1], fps, data)

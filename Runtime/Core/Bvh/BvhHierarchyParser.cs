@@ -275,7 +275,17 @@ namespace DeltaInterpolator.Core.Bvh
                 throw Error(line, $"{keyword} without a name", $"expected '{keyword} name'");
             }
 
-            return string.Join(" ", parts);
+            string name = string.Join(" ", parts);
+            if (string.IsNullOrWhiteSpace(name))
+            {
+                // E.g. a lone U+00A0 or U+2028: a token to the tokenizer, but no name to a reader (or a skeleton).
+                var codes = new List<string>();
+                for (int i = 0; i < name.Length && i < 8; i++) codes.Add("U+" + ((int)name[i]).ToString("X4", CultureInfo.InvariantCulture));
+                if (name.Length > 8) codes.Add("…");
+                throw Error(line, $"{keyword} name is only blank characters ({string.Join(" ", codes)})", "expected a joint name with a visible character");
+            }
+
+            return name;
         }
 
         private string Expect(string expected)

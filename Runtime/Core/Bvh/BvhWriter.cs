@@ -47,6 +47,7 @@ namespace DeltaInterpolator.Core.Bvh
 
             Skeleton skeleton = animation.Skeleton;
             RequireDepthFirstOrder(skeleton);
+            RequireFinite(animation);
             var sb = new StringBuilder(4096);
             sb.Append("HIERARCHY").Append(newLine);
             WriteJoint(animation, 0, 0, sb, newLine);
@@ -92,6 +93,46 @@ namespace DeltaInterpolator.Core.Bvh
 
             writer.Flush();
         }
+
+        /// <summary>
+        /// A NaN or an infinity never reaches a file (a reader refuses it, and it would replace good motion):
+        /// refused with <see cref="DataFormatException"/> naming the frame and joint, before a byte is written.
+        /// </summary>
+        private static void RequireFinite(BvhAnimation animation)
+        {
+            MotionClip motion = animation.Motion;
+            Skeleton skeleton = animation.Skeleton;
+            const string expected = "expected finite motion (an input value too large to compute with, e.g. 1e308, or a --scale or frame time that overflows); nothing was written";
+            if (!IsFinite(motion.FrameTime) || !(motion.FrameTime > 0))
+            {
+                throw new DataFormatException(animation.SourceName, $"the frame time is {motion.FrameTime.ToString(CultureInfo.InvariantCulture)}", expected);
+            }
+
+            for (int i = 0; i < skeleton.Offsets.Count; i++)
+            {
+                if (!IsFinite(skeleton.Offsets[i])) throw new DataFormatException(animation.SourceName, $"joint '{skeleton.Names[i / 3]}' has a non-finite offset", expected);
+            }
+
+            int j = skeleton.JointCount;
+            double[] positions = motion.LocalPositions, rotations = motion.LocalRotations;
+            for (int f = 0; f < motion.FrameCount; f++)
+            {
+                for (int k = 0; k < j; k++)
+                {
+                    int p = motion.PositionIndex(f, k), r = motion.RotationIndex(f, k);
+                    bool finite = IsFinite(positions[p]) && IsFinite(positions[p + 1]) && IsFinite(positions[p + 2])
+                        && IsFinite(rotations[r]) && IsFinite(rotations[r + 1]) && IsFinite(rotations[r + 2]) && IsFinite(rotations[r + 3]);
+                    if (!finite)
+                    {
+                        throw new DataFormatException(animation.SourceName,
+                            string.Format(CultureInfo.InvariantCulture, "frame {0}, joint '{1}' is not a finite number (NaN or infinity) in the result", f, skeleton.Names[k]),
+                            expected);
+                    }
+                }
+            }
+        }
+
+        private static bool IsFinite(double value) => !double.IsNaN(value) && !double.IsInfinity(value);
 
         /// <summary>
         /// BVH lists joints depth-first; a reader numbers them in that order. A skeleton whose indices are

@@ -1,4 +1,6 @@
+using System.Globalization;
 using System.IO;
+using System.Text;
 
 namespace DeltaInterpolator.Core.IO
 {
@@ -31,6 +33,39 @@ namespace DeltaInterpolator.Core.IO
                 throw new InputPathException(path, FileNode.Describe(kind), "expected " + expected);
             }
         }
+
+        /// <summary>
+        /// <see cref="Check"/>, then the file as UTF-8 text, refusing (with <see cref="InputPathException"/>)
+        /// one larger than <paramref name="maxBytes"/> before reading it, so a small settings file (a joint
+        /// map, a manifest, a key list) can never make the reader grow without bound.
+        /// </summary>
+        /// <exception cref="InputPathException">Not a regular file, or larger than <paramref name="maxBytes"/>.</exception>
+        /// <exception cref="IOException">The file cannot be read.</exception>
+        public static string ReadAllText(string path, string expected, long maxBytes)
+        {
+            Check(path, expected);
+            using (var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read))
+            {
+                // The length once more from the open file (it may have grown since the check), and a read that
+                // stops one byte past the limit either way.
+                if (stream.Length > maxBytes) throw TooLarge(path, stream.Length, expected, maxBytes);
+                var buffer = new MemoryStream();
+                var chunk = new byte[1 << 16];
+                int n;
+                while ((n = stream.Read(chunk, 0, chunk.Length)) > 0)
+                {
+                    buffer.Write(chunk, 0, n);
+                    if (buffer.Length > maxBytes) throw TooLarge(path, buffer.Length, expected, maxBytes);
+                }
+
+                return new UTF8Encoding(false).GetString(buffer.GetBuffer(), 0, (int)buffer.Length);
+            }
+        }
+
+        private static InputPathException TooLarge(string path, long bytes, string expected, long maxBytes) => new InputPathException(
+            path,
+            string.Format(CultureInfo.InvariantCulture, "is {0:N0} bytes or more", bytes),
+            string.Format(CultureInfo.InvariantCulture, "expected {0} of at most {1:N0} bytes", expected, maxBytes));
 
         /// <summary><see cref="Check"/>, then all bytes of the file.</summary>
         /// <exception cref="InputPathException">Not a regular file.</exception>

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Concurrent;
 using System.Collections.Generic;
 using System.IO;
 using System.Runtime.InteropServices;
@@ -13,6 +14,25 @@ namespace DeltaInterpolator.Core.IO
     /// </summary>
     internal static class OutputFile
     {
+        // Full paths that Check found missing: Write must then create them exclusively, so that a file that
+        // appeared meanwhile (a second run writing the same new path) is never silently replaced.
+        private static readonly ConcurrentDictionary<string, byte> CheckedAsNew = new ConcurrentDictionary<string, byte>(StringComparer.Ordinal);
+
+        // Temporary files being written now, for DeleteTemporaries (SIGINT, SIGTERM).
+        private static readonly ConcurrentDictionary<string, byte> Temporaries = new ConcurrentDictionary<string, byte>(StringComparer.Ordinal);
+
+        /// <summary>
+        /// Deletes the temporary files of writes in progress. The CLI calls it when SIGINT or SIGTERM ends the
+        /// process during a write: the old output stays intact and no <c>.NAME.XXXXXXXX.tmp</c> is left behind.
+        /// </summary>
+        public static void DeleteTemporaries()
+        {
+            foreach (string temporary in Temporaries.Keys)
+            {
+                TryDelete(temporary);
+            }
+        }
+
         /// <summary>
         /// Refuses, with <see cref="OutputPathException"/>, a target that cannot or must not be written: a
         /// folder, a named pipe, device or socket, an existing file without <paramref name="force"/>, one of
@@ -58,6 +78,15 @@ namespace DeltaInterpolator.Core.IO
 
             string folder = NearestExistingFolder(Path.GetDirectoryName(full) ?? full, path);
             ProbeWritable(folder, path);
+            if (target.Kind == FileNodeKind.Missing)
+            {
+                CheckedAsNew[full] = 0;
+            }
+            else
+            {
+                CheckedAsNew.TryRemove(full, out _);
+            }
+
             return full;
         }
 
@@ -71,6 +100,9 @@ namespace DeltaInterpolator.Core.IO
         /// Writes the file through <paramref name="write"/> into a temporary file in the target's folder
         /// (created when missing), flushes it to disk and renames it over the target. When
         /// <paramref name="write"/> throws, the temporary file is deleted and the target is untouched.
+        /// A target that <see cref="Check(string, bool, IEnumerable{string})"/> found missing is created
+        /// exclusively (a hard link that fails when the name exists): when another process wrote it
+        /// meanwhile, its file stays and this write fails with <see cref="OutputPathException"/>.
         /// </summary>
         public static void Write(string path, Action<Stream> write)
         {
@@ -79,6 +111,8 @@ namespace DeltaInterpolator.Core.IO
             string folder = Path.GetDirectoryName(full) ?? ".";
             Directory.CreateDirectory(folder);
             string temporary = Path.Combine(folder, "." + Path.GetFileName(full) + "." + Guid.NewGuid().ToString("N").Substring(0, 8) + ".tmp");
+            bool mustBeNew = CheckedAsNew.TryRemove(full, out _);
+            Temporaries[temporary] = 0;
             try
             {
                 using (var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16))
@@ -87,13 +121,13 @@ namespace DeltaInterpolator.Core.IO
                     stream.Flush(true);
                 }
 
-                if (File.Exists(full))
+                if (!mustBeNew && File.Exists(full))
                 {
                     File.Replace(temporary, full, null);
                 }
                 else
                 {
-                    File.Move(temporary, full);
+                    PublishNew(temporary, full, path);
                 }
             }
             catch
@@ -101,7 +135,55 @@ namespace DeltaInterpolator.Core.IO
                 TryDelete(temporary);
                 throw;
             }
+            finally
+            {
+                Temporaries.TryRemove(temporary, out _);
+            }
         }
+
+        /// <summary>
+        /// Gives the finished <paramref name="temporary"/> the name <paramref name="full"/> only if no file has
+        /// that name: link(2) then unlink on Unix (atomic: it fails when the name exists), a move that does not
+        /// replace elsewhere (atomic on Windows).
+        /// </summary>
+        private static void PublishNew(string temporary, string full, string shownPath)
+        {
+            if (!_linkMissing && !RuntimeInformation.IsOSPlatform(OSPlatform.Windows))
+            {
+                try
+                {
+                    if (Link(Encoding.UTF8.GetBytes(temporary + "\0"), Encoding.UTF8.GetBytes(full + "\0")) == 0)
+                    {
+                        TryDelete(temporary);
+                        return;
+                    }
+
+                    if (FileNode.Of(full).Kind != FileNodeKind.Missing) throw Appeared(shownPath);
+                    // Another failure (a file system without hard links): the move below.
+                }
+                catch (Exception e) when (e is DllNotFoundException || e is EntryPointNotFoundException || e is BadImageFormatException)
+                {
+                    _linkMissing = true;
+                }
+            }
+
+            try
+            {
+                File.Move(temporary, full);
+            }
+            catch (IOException) when (FileNode.Of(full).Kind != FileNodeKind.Missing)
+            {
+                throw Appeared(shownPath);
+            }
+        }
+
+        private static OutputPathException Appeared(string shownPath) => new OutputPathException(
+            shownPath, "appeared while this command ran (another run wrote it?)", "expected a new path, or --force to replace it");
+
+        private static bool _linkMissing;
+
+        [DllImport("libSystem.Native", EntryPoint = "SystemNative_Link")]
+        private static extern int Link(byte[] source, byte[] linkTarget);
 
         /// <summary>Writes <paramref name="text"/> as UTF-8 (no byte-order mark) through <see cref="Write"/>.</summary>
         public static void WriteAllText(string path, string text)

@@ -13,7 +13,15 @@ namespace DeltaInterpolator.Core.IO
             : base(path + ": " + problem + "; " + expected)
         {
             Path = path;
+            Problem = problem;
+            Expected = expected;
         }
+
+        /// <summary>What is wrong with the path, e.g. "already exists".</summary>
+        public string Problem { get; }
+
+        /// <summary>What was expected instead, starting with "expected".</summary>
+        public string Expected { get; }
 
         /// <summary>The output path as the user gave it.</summary>
         public string Path { get; }

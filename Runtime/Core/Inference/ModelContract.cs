@@ -20,13 +20,13 @@ namespace DeltaInterpolator.Core.Inference
     public sealed class ModelContract
     {
         /// <summary>The contract version this runtime implements (Python: <c>CONTRACT_VERSION</c>).</summary>
-        public const int Version = 1;
+        public const int Version = 2;
 
         /// <summary>Oldest contract version this runtime reads.</summary>
         public const int MinSupportedVersion = 1;
 
         /// <summary>Newest contract version this runtime reads.</summary>
-        public const int MaxSupportedVersion = 1;
+        public const int MaxSupportedVersion = 2;
 
         /// <summary>Features per joint in <c>key_features</c>: local 6D rotation then global position.</summary>
         public const int FeaturesPerJoint = 9;
@@ -50,6 +50,12 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>The contract version the model was exported with.</summary>
         public int ContractVersion { get; private set; }
+
+        /// <summary>
+        /// True from contract version 2: every graph input and output has a leading batch axis (one row per
+        /// transition), so many characters' work runs in one call. Version 1 graphs run one transition at a time.
+        /// </summary>
+        public bool HasBatchAxis => ContractVersion >= 2;
 
         /// <summary>The model's name, e.g. <c>DeltaInterpolator-LaFAN1</c>.</summary>
         public string Name { get; private set; } = "";
@@ -101,6 +107,12 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>Frames per second of the training data (0 when unknown): the rate a request's frames are at.</summary>
         public double TrainingFps { get; private set; }
+
+        /// <summary>The lowest <c>training.fps</c> a model may declare (frames per second).</summary>
+        public const double MinTrainingFps = 1;
+
+        /// <summary>The highest <c>training.fps</c> a model may declare (motion capture rarely exceeds 240 fps).</summary>
+        public const double MaxTrainingFps = 1000;
 
         /// <summary>What the model was trained on, as the exporter wrote it ("" when unknown).</summary>
         public string TrainingData { get; private set; } = "";
@@ -437,6 +449,13 @@ namespace DeltaInterpolator.Core.Inference
                 TrainingFutureFrames = tf.Range("future_frames");
                 TrainingMissingFrames = tf.Range("missing_frames");
                 TrainingFps = t.ContainsKey("fps") ? tf.Number("fps", "training.fps", 0) : 0;
+                if (t.ContainsKey("fps") && !(TrainingFps >= MinTrainingFps && TrainingFps <= MaxTrainingFps))
+                {
+                    // Retargeting resamples to this rate: 1e6 fps would turn a 7.5 s clip into 7.5 M frames.
+                    report.Error(Source, $"metadata training.fps is {Fmt(TrainingFps)}",
+                        $"expected a frame rate from {Fmt(MinTrainingFps)} to {Fmt(MaxTrainingFps)} fps (LaFAN1 and the shipped models: 30); export the checkpoint again");
+                    TrainingFps = 0;
+                }
                 TrainingData = t.TryGetValue("data", out JsonValue? data) ? tf.Guard(() => data.ExpectString("training.data"), "") : "";
             }
             else if (training != null)

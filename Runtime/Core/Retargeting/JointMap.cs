@@ -243,8 +243,28 @@ namespace DeltaInterpolator.Core.Retargeting
             return new JointMap(sourceName, chains, mayLack);
         }
 
-        /// <summary>Reads a user map file (see <see cref="FromJson"/>).</summary>
-        public static JointMap Load(string path, JointMap? fallback = null) => FromJson(File.ReadAllText(path), path, fallback);
+        /// <summary>
+        /// The map's target joints that <paramref name="target"/> does not have (a typo, another skeleton's
+        /// names): a user map's keys that would otherwise be ignored without a word.
+        /// </summary>
+        public IReadOnlyList<string> TargetsNotIn(Skeleton target)
+        {
+            if (target == null) throw new ArgumentNullException(nameof(target));
+            var unknown = new List<string>();
+            foreach (string t in _targets) if (target.IndexOf(t) < 0) unknown.Add(t);
+            return unknown;
+        }
+
+        /// <summary>The largest map file read (a map of a few hundred joints is a few kilobytes).</summary>
+        public const long MaxFileBytes = 1 << 20;
+
+        /// <summary>
+        /// Reads a user map file (see <see cref="FromJson"/>) through the safe input path: a regular file of at
+        /// most <see cref="MaxFileBytes"/> (a folder, a named pipe or a device is refused before it is opened).
+        /// </summary>
+        /// <exception cref="IO.InputPathException">Not a regular file, or too large.</exception>
+        public static JointMap Load(string path, JointMap? fallback = null) =>
+            FromJson(IO.InputFile.ReadAllText(path, "a JSON joint map such as {\"Hips\": \"pelvis\", ...}", MaxFileBytes), path, fallback);
 
         /// <summary>
         /// Index of the joint named <paramref name="name"/> in <paramref name="skeleton"/>: an exact match

@@ -1,4 +1,5 @@
 using System;
+using System.Globalization;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -12,10 +13,19 @@ namespace DeltaInterpolator.Core.Retargeting
     /// </summary>
     public static class MotionResampler
     {
+        /// <summary>
+        /// The most frames × joints a resampled clip may have: 10 million (e.g. 450,000 frames of a 22-joint
+        /// skeleton, over 4 hours at 30 fps; about 560 MB of motion). A longer result is refused before
+        /// anything is allocated (a 2-frame file with <c>Frame Time: 1e5</c> would otherwise ask for gigabytes).
+        /// </summary>
+        public const long MaxJointFrames = 10_000_000;
+
         /// <summary>The clip at <paramref name="frameTime"/> seconds per frame.</summary>
         /// <param name="clip">The motion.</param>
         /// <param name="frameTime">The new seconds per frame (&gt; 0).</param>
-        public static MotionClip Resample(MotionClip clip, double frameTime)
+        /// <param name="source">The file the motion came from, for the message when the result is too long.</param>
+        /// <exception cref="DataFormatException">The result would exceed <see cref="MaxJointFrames"/>.</exception>
+        public static MotionClip Resample(MotionClip clip, double frameTime, string? source = null)
         {
             if (clip == null) throw new ArgumentNullException(nameof(clip));
             if (!(frameTime > 0) || double.IsInfinity(frameTime)) throw new ArgumentOutOfRangeException(nameof(frameTime), "frame time must be a positive number of seconds");
@@ -23,6 +33,7 @@ namespace DeltaInterpolator.Core.Retargeting
             if (clip.FrameCount == 0) return new MotionClip(clip.Skeleton, 0, frameTime, new double[0], new double[0]);
             double span = (clip.FrameCount - 1) * clip.FrameTime;
             // The small tolerance keeps the last frame when the span is a whole number of new frames up to rounding.
+            CheckLength(Math.Floor(span / frameTime + 1e-6) + 1, j, clip.FrameCount, clip.FrameTime, frameTime, source);
             int count = (int)Math.Floor(span / frameTime + 1e-6) + 1;
             var positions = new double[count * j * 3];
             var rotations = new double[count * j * 4];
@@ -33,6 +44,22 @@ namespace DeltaInterpolator.Core.Retargeting
 
             Quaternions.FixContinuity(rotations, count, j);
             return new MotionClip(clip.Skeleton, count, frameTime, positions, rotations);
+        }
+
+        /// <summary>
+        /// Refuses, with <see cref="DataFormatException"/>, a resampled length of <paramref name="frames"/>
+        /// frames of <paramref name="joints"/> joints beyond <see cref="MaxJointFrames"/> (or not a number).
+        /// </summary>
+        internal static void CheckLength(double frames, int joints, int sourceFrames, double sourceFrameTime, double frameTime, string? source)
+        {
+            if (frames * Math.Max(1, joints) <= MaxJointFrames) return;
+            throw new DataFormatException(
+                source ?? "motion",
+                string.Format(CultureInfo.InvariantCulture,
+                    "{0:N0} frames at {1:0.###} s per frame ({2:0.###e+0} s) make {3:0.###e+0} frames at {4:0.##} fps, {5} joints each",
+                    sourceFrames, sourceFrameTime, (sourceFrames - 1) * sourceFrameTime, frames, 1 / frameTime, joints),
+                string.Format(CultureInfo.InvariantCulture,
+                    "expected at most {0:N0} frames × joints after resampling (check the file's Frame Time: line, --fps and --input-fps)", MaxJointFrames));
         }
 
         /// <summary>

@@ -57,7 +57,7 @@ namespace DeltaInterpolator.Core.Retargeting
 
         private readonly bool[] _synthesized;     // target joint → true when the source lacks it (rigid child of its parent)
 
-        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, bool[] synthesized, double? rootScale)
+        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, bool[] synthesized, double? rootScale, string sourceName)
         {
             SourceReference = source;
             _synthesized = synthesized;
@@ -121,7 +121,8 @@ namespace DeltaInterpolator.Core.Retargeting
             TargetLegLength = LegLength(TargetReference, measured.ToArray(), 0);
             if (rootScale == null && (!(SourceLegLength > 0) || !(TargetLegLength > 0)))
             {
-                throw new JointMapException(map.Name, $"the reference poses give leg lengths {SourceLegLength:G4} (source) and {TargetLegLength:G4} (target)",
+                // Named by the file whose pose it is (the map's name alone would hide which input is at fault).
+                throw new JointMapException(sourceName, $"the reference poses give leg lengths {SourceLegLength:G4} (source) and {TargetLegLength:G4} (target) with joint map '{map.Name}'",
                     "expected reference poses standing upright (Y up) with joints below the root; name a standing frame as the reference");
             }
 
@@ -305,7 +306,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 carried[j] = path.ToArray();
             }
 
-            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, synthesized, rootScale);
+            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, synthesized, rootScale, sourceName);
         }
 
         /// <summary>

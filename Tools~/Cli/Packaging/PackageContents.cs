@@ -44,6 +44,9 @@ namespace DeltaInterpolator.Cli.Packaging
         // Never packed even outside git (where .gitignore cannot say so): outputs, data and caches.
         private static readonly string[] NeverPacked = { "runs", "node_modules", "__pycache__", "out" };
 
+        // A .meta or package.json is a few hundred bytes; read at most this much of one.
+        private const long MaxMetaBytes = 1 << 20;
+
         private static readonly Regex GuidLine = new Regex(@"^guid:\s*([0-9a-f]{32})\s*$", RegexOptions.Multiline);
 
         private PackageContents(string root, string name, string version, List<string> files, List<PackageAsset> assets)
@@ -81,14 +84,13 @@ namespace DeltaInterpolator.Cli.Packaging
         {
             root = Path.GetFullPath(root);
             string manifest = Path.Combine(root, "package.json");
-            if (!File.Exists(manifest))
-            {
-                throw new CliErrors.UsageException($"{manifest}: no such file; expected the root of a Unity package (a folder with package.json)");
-            }
+            Core.IO.InputFile.Check(manifest, "the root of a Unity package (a folder with package.json)");
 
             (string name, string version) = ReadManifest(manifest);
+            PackagePaths.CheckManifest(manifest, name, version);
             List<string> all = GitFiles(root) ?? WalkFiles(root);
-            var present = all.Where(f => File.Exists(Path.Combine(root, f))).Distinct(StringComparer.Ordinal).ToList();
+            var present = all.Where(f => File.Exists(Path.Combine(root, f)) || Core.IO.FileNode.Of(Path.Combine(root, f)).Kind is not (Core.IO.FileNodeKind.Missing or Core.IO.FileNodeKind.Directory))
+                .Distinct(StringComparer.Ordinal).ToList();
 
             var importable = present.Where(Importable).ToList();
             var metas = new HashSet<string>(importable.Where(f => f.EndsWith(".meta", StringComparison.Ordinal)), StringComparer.Ordinal);
@@ -109,7 +111,8 @@ namespace DeltaInterpolator.Cli.Packaging
                     throw new CliErrors.UsageException($"{Path.Combine(root, path)}: has no .meta; expected one beside every importable file and folder (run python3 Tools~/metas.py and commit the metas)");
                 }
 
-                Match m = GuidLine.Match(File.ReadAllText(Path.Combine(root, meta)));
+                PackagePaths.CheckFile(root, meta); // a named pipe would block the read forever
+                Match m = GuidLine.Match(Core.IO.InputFile.ReadAllText(Path.Combine(root, meta), "a Unity .meta file", MaxMetaBytes));
                 if (!m.Success)
                 {
                     throw new CliErrors.UsageException($"{Path.Combine(root, meta)}: has no guid line; expected 'guid: ' and 32 hex digits");
@@ -126,6 +129,13 @@ namespace DeltaInterpolator.Cli.Packaging
             }
 
             var files = importable.Concat(present.Where(Carried)).Distinct(StringComparer.Ordinal).OrderBy(f => f, StringComparer.Ordinal).ToList();
+            foreach (string file in files)
+            {
+                // Before a byte is written: names an archive holds as they are, files that are files of this package.
+                PackagePaths.CheckEntry(root, file, "package/");
+                PackagePaths.CheckFile(root, file);
+            }
+
             return new PackageContents(root, name, version, files, assets);
         }
 
@@ -146,7 +156,7 @@ namespace DeltaInterpolator.Cli.Packaging
         private static (string, string) ReadManifest(string manifest)
         {
             // A malformed file throws DataFormatException (FILE:LINE: …), which the CLI reports as bad input.
-            IReadOnlyDictionary<string, JsonValue> obj = JsonValue.Parse(File.ReadAllText(manifest), manifest).ExpectObject("package.json");
+            IReadOnlyDictionary<string, JsonValue> obj = JsonValue.Parse(Core.IO.InputFile.ReadAllText(manifest, "a UPM package.json", MaxMetaBytes), manifest).ExpectObject("package.json");
             string name = obj.TryGetValue("name", out JsonValue? n) ? n.ExpectString("name") : "";
             string version = obj.TryGetValue("version", out JsonValue? v) ? v.ExpectString("version") : "";
             if (name.Length == 0 || version.Length == 0)

@@ -26,7 +26,9 @@ namespace DeltaInterpolator.Cli.Verbs
         public static JointMap? LoadMap(string? path, BvhAnimation animation, ModelContract contract)
         {
             if (path == null) return null;
-            return JointMap.Load(path, JointMap.Detect(animation.Skeleton, contract.Skeleton));
+            JointMap map = JointMap.Load(path, JointMap.Detect(animation.Skeleton, contract.Skeleton));
+            MapWarnings.UnknownTargets(map, contract.Skeleton, path); // keys that are no model joint: named, not ignored
+            return map;
         }
 
         /// <summary>Every <paramref name="interval"/> frames from <paramref name="first"/>, never two keys within one model frame.</summary>

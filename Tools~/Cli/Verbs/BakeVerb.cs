@@ -37,7 +37,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<string?> _keys = new Option<string?>("--keys")
         {
-            Description = "Key frame indices of IN.bvh, increasing, comma-separated (at least two). The output spans the first to the last key.",
+            Description = "Key frame indices of IN.bvh, increasing, comma-separated (at least two), or @FILE for a file of them (commas, spaces or lines). The output spans the first to the last key.",
             HelpName = "F,F,...",
         };
 
@@ -154,7 +154,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 "skeleton and rate, its key frames kept exactly. --preview writes an HTML player of ground truth, SLERP and model.\n" +
                 "Examples:\n" +
                 "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n" +
-                "  inbetween bake Samples~/Demo/cmu_01_01_jumps_turn.bvh --every 40 --out out/jumps-every40.bvh --preview out/jumps.html --png out/jumps.png --force");
+                "  inbetween bake Samples~/Demo/cmu_09_12_walk_navigate.bvh --every 60 --reference-frame 0 --from-frame 1 --out out/walk-every60.bvh --json out/walk-every60.json --preview out/walk.html --png out/walk.png --force\n" +
+                "  inbetween bake ../shared/data/cmu-more/60_01.bvh --input-fps 60 --from-frame 10 --every 30 --out out/salsa.bvh --force");
             command.Arguments.Add(_input);
             command.Options.Add(_keys);
             command.Options.Add(_every);
@@ -206,15 +207,15 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             if (threads < 1) throw new CliErrors.UsageException($"inbetween bake: --threads {threads}; expected 1 or more");
-            if (!File.Exists(input)) throw new CliErrors.UsageException($"{input}: no such file; expected a .bvh file");
+            InputFile.Check(input, "a .bvh file");
             string modelPath = parse.GetValue(_model) ?? ShippedModels.Find(ShippedModel);
-            if (!File.Exists(modelPath)) throw new CliErrors.UsageException($"{modelPath}: no such file; expected an exported model (NAME.onnx), e.g. {ShippedModel}");
+            InputFile.Check(modelPath, $"an exported model (NAME.onnx), e.g. {ShippedModel}");
             string? statsGiven = parse.GetValue(_stats);
-            if (statsGiven != null && !File.Exists(statsGiven)) throw new CliErrors.UsageException($"{statsGiven}: no such file; expected a statistics JSON such as {DefaultStats}");
+            if (statsGiven != null) InputFile.Check(statsGiven, $"a statistics JSON such as {DefaultStats}");
             string? statsPath = statsGiven ?? (File.Exists(DefaultStats) ? DefaultStats : null);
 
             string? mapPath = parse.GetValue(_map);
-            if (mapPath != null && !File.Exists(mapPath)) throw new CliErrors.UsageException($"{mapPath}: no such file; expected a JSON joint map");
+            if (mapPath != null) InputFile.Check(mapPath, "a JSON joint map"); // a folder, a named pipe or a device is refused as such
             double? inputFps = parse.GetValue(_inputFps);
             if (inputFps.HasValue && !(inputFps.Value >= 1 && inputFps.Value <= 1000))
             {
@@ -235,6 +236,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
             var read = Stopwatch.StartNew();
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(input), inputFps);
+            MotionChecks.RequireFinitePositions(animation.Motion, input, "the input");
             double readSeconds = read.Elapsed.TotalSeconds;
 
             var load = Stopwatch.StartNew();
@@ -248,6 +250,9 @@ namespace DeltaInterpolator.Cli.Verbs
 
             BakeOutcome outcome = BakeBoth(animation, input, inputKeys, model, policy, context == "filled", parse.GetValue(_referenceFrame), jointMap);
             MotionClip modelOut = outcome.ModelOut, slerpOut = outcome.SlerpOut;
+            // Before OUT.bvh, the scores or the preview: a NaN or overflow is refused, never written or drawn.
+            MotionChecks.RequireFinitePositions(modelOut, input, "the model's result");
+            MotionChecks.RequireFinitePositions(slerpOut, input, "the SLERP result");
             BakePlan modelPlan = outcome.ModelPlan;
             BenchmarkStatistics? statistics = LoadStatistics(statsPath, statsGiven != null, animation.Skeleton, input);
 
@@ -402,9 +407,8 @@ namespace DeltaInterpolator.Cli.Verbs
             if (taken.Contains(Path.GetFullPath(html))) throw new CliErrors.UsageException($"{previewPath}: the same file as another output; expected a different path for --preview");
             taken.Add(Path.GetFullPath(html));
             if (pngPath == null) return;
-            string sheet = ContactSheet.OutputPathFor(pngPath);
-            OutputFile.Check(sheet, force, inputs);
-            if (taken.Contains(Path.GetFullPath(sheet))) throw new CliErrors.UsageException($"{pngPath}: the same file as another output; expected a different path for --png");
+            // The PNG and the SVG written instead when Chromium fails: both checked now, not after the work.
+            ContactSheet.CheckOutputs(pngPath, force, taken, inputs);
         }
 
         /// <summary>Gaps filled → one progress bar ("Baking gaps with the model"), updated synchronously.</summary>
@@ -517,6 +521,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private static int[] ParseKeys(string text, string input)
         {
             var keys = new List<int>();
+            text = KeyListArgument.Text(text);
             foreach (string part in text.Split(','))
             {
                 string p = part.Trim();

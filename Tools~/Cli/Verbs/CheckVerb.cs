@@ -5,6 +5,7 @@ using System.IO;
 using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.OnnxRuntime;
 using Spectre.Console;
 
@@ -66,10 +67,8 @@ namespace DeltaInterpolator.Cli.Verbs
             int? past = parse.GetValue(_past);
             int? gap = parse.GetValue(_gap);
             string? skeleton = parse.GetValue(_skeleton);
-            if (!File.Exists(path))
-            {
-                throw new CliErrors.UsageException($"{path}: no such file; expected an .onnx file exported by `python3 -m deltainterp export`");
-            }
+            InputFile.Check(path, "an .onnx file exported by `python3 -m deltainterp export`");
+            if (skeleton != null) InputFile.Check(skeleton, "a .bvh file");
 
             var report = new ModelCheckReport();
             ModelContract? contract = Check(path, report);
@@ -136,10 +135,10 @@ namespace DeltaInterpolator.Cli.Verbs
             var table = new Table().Border(TableBorder.Rounded).HideHeaders();
             table.AddColumn("");
             table.AddColumn("");
-            table.AddRow("Model", Markup.Escape(c.Name.Length > 0 ? c.Name : "(unnamed)"));
+            table.AddRow("Model", Markup.Escape(c.Name.Length > 0 ? TerminalText.Safe(c.Name, TerminalText.NameLength) : "(unnamed)"));
             table.AddRow("Graph", ModelContract.GraphName(c.Graph));
             table.AddRow("Contract version", string.Format(CultureInfo.InvariantCulture, "{0} (this runtime reads {1} to {2})", c.ContractVersion, ModelContract.MinSupportedVersion, ModelContract.MaxSupportedVersion));
-            table.AddRow("Skeleton", string.Format(CultureInfo.InvariantCulture, "{0} joints, root '{1}'", c.JointCount, Markup.Escape(c.Skeleton.Names[0])));
+            table.AddRow("Skeleton", string.Format(CultureInfo.InvariantCulture, "{0} joints, root '{1}'", c.JointCount, Markup.Escape(TerminalText.Safe(c.Skeleton.Names[0], TerminalText.NameLength))));
             table.AddRow("Unit scale", ModelContract.Fmt(c.UnitScale));
             table.AddRow("Delta modes", $"input {c.InputDeltaMode}, output {c.OutputDeltaMode}");
             table.AddRow("Largest P + n", c.LargestFrameIndex.ToString(CultureInfo.InvariantCulture));
@@ -165,8 +164,8 @@ namespace DeltaInterpolator.Cli.Verbs
             foreach (ModelCheck c in report)
             {
                 string colour = c.Severity == CheckSeverity.Error ? "red" : c.Severity == CheckSeverity.Warning ? "yellow" : "blue";
-                AnsiConsole.MarkupLine($"[{colour}]{c.Severity,-7}[/] {Markup.Escape(c.Source + ": " + c.Message)}");
-                if (c.Remedy.Length > 0) AnsiConsole.MarkupLine("        " + Markup.Escape(c.Remedy));
+                AnsiConsole.MarkupLine($"[{colour}]{c.Severity,-7}[/] {Markup.Escape(TerminalText.Safe(c.Source + ": " + c.Message, TerminalText.LineLength))}");
+                if (c.Remedy.Length > 0) AnsiConsole.MarkupLine("        " + Markup.Escape(TerminalText.Safe(c.Remedy, TerminalText.LineLength)));
             }
 
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "{0} error(s), {1} warning(s), {2} note(s).",

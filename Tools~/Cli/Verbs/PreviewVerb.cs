@@ -123,10 +123,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     throw new CliErrors.UsageException($"{path}: the track name '{name}' is used twice; expected unique names (give one with --track NAME=FILE)");
                 }
 
-                if (!File.Exists(path))
-                {
-                    throw new CliErrors.UsageException($"{path}: no such file; expected a .bvh file");
-                }
+                InputFile.Check(path, "a .bvh file");
             }
 
             (int Start, int End)? range = ParseFrames(parse.GetValue(_frames));
@@ -138,13 +135,8 @@ namespace DeltaInterpolator.Cli.Verbs
             string? pngPath = parse.GetValue(_png);
             if (pngPath != null)
             {
-                string sheetPath = ContactSheet.OutputPathFor(pngPath);
-                if (string.Equals(Path.GetFullPath(sheetPath), Path.GetFullPath(htmlPath), StringComparison.Ordinal))
-                {
-                    throw new CliErrors.UsageException($"{pngPath}: the same file as --out; expected a different path for the contact sheet");
-                }
-
-                OutputFile.Check(sheetPath, force, inputs);
+                // The PNG and the SVG written instead when Chromium fails: both checked now, not after the work.
+                ContactSheet.CheckOutputs(pngPath, force, new[] { htmlPath }, inputs);
             }
 
             var clips = new List<(string Name, MotionClip Clip)>();
@@ -152,6 +144,8 @@ namespace DeltaInterpolator.Cli.Verbs
             foreach ((string name, string path) in requests)
             {
                 BvhAnimation animation = BvhReader.Read(path);
+                if (animation.Motion.FrameCount == 0) throw new CliErrors.UsageException($"{path}: has no frames (Frames: 0); expected at least one frame to show");
+                MotionChecks.RequireFinitePositions(animation.Motion, path, "the motion");
                 if (first == null)
                 {
                     first = animation;
@@ -189,7 +183,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string title = Path.GetFileName(requests[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
             PreviewScene scene = PreviewScene.FromClips(title, clips, sceneKeys, truth != null ? 0 : -1);
             PreviewWriter.WriteHtml(scene, htmlPath);
-            Console.WriteLine(string.Format(
+            SafeLine(string.Format(
                 CultureInfo.InvariantCulture,
                 "wrote {0} ({1:0} KB): {2} track{6}, {3} frames at {4:0.##} fps, {5} key frames",
                 htmlPath,
@@ -204,7 +198,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 for (int t = 0; t < scene.Tracks.Count; t++)
                 {
                     if (t == scene.GroundTruthTrack) continue;
-                    Console.WriteLine(string.Format(
+                    SafeLine(string.Format(
                         CultureInfo.InvariantCulture,
                         "  {0}: mean joint position error {1:0.###} (data units) {2}",
                         scene.Tracks[t].Name,
@@ -226,11 +220,14 @@ namespace DeltaInterpolator.Cli.Verbs
                     written = ContactSheet.Write(scene, pngPath, force, out fallback);
                 }
 
-                Console.WriteLine(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0));
+                SafeLine(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0));
             }
 
             return 0;
         }
+
+        /// <summary>One line on stdout with file and track names made terminal-safe (no raw escapes, no forged lines).</summary>
+        private static void SafeLine(string line) => Console.WriteLine(TerminalText.Safe(line, TerminalText.LineLength));
 
         private static (string Name, string Path) SplitTrack(string value, string defaultName, string option)
         {
@@ -287,7 +284,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private static int[] ParseKeys(string? text)
         {
             if (text == null) return Array.Empty<int>();
-            string[] parts = text.Split(',');
+            string[] parts = KeyListArgument.Text(text).Split(',');
             var keys = new int[parts.Length];
             for (int i = 0; i < parts.Length; i++)
             {

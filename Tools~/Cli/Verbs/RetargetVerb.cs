@@ -26,7 +26,7 @@ namespace DeltaInterpolator.Cli.Verbs
     public sealed class RetargetVerb : ICliVerb
     {
         /// <summary>The model whose skeleton <c>--to model</c> means when <c>--model</c> is not given.</summary>
-        internal const string DefaultModel = "Runtime/Models/DeltaInterpolator-LaFAN1.onnx";
+        internal const string DefaultModel = ShippedModels.Default;
 
         private readonly Argument<string> _input = new Argument<string>("IN")
         {
@@ -106,7 +106,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "scaling the root by leg length and resampling to the model's frame rate.\n" +
                 "Joints are matched by name (built-in LaFAN1, CMU, Mixamo and Unity HumanBodyBones tables, or --map);\n" +
                 "a skeleton missing joints the model needs is refused with their names (exit status 2).\n" +
-                "Example:\n  inbetween retarget Samples~/Demo/cmu_01_01_jumps_turn.bvh --to model --out out/jumps_on_model.bvh");
+                "Example:\n  inbetween retarget Samples~/Demo/cmu_09_12_walk_navigate.bvh --to model --reference-frame 0 --from-frame 1 --out out/walk_on_model.bvh");
             command.Arguments.Add(_input);
             command.Options.Add(_to);
             command.Options.Add(_out);
@@ -130,7 +130,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string to = parse.GetValue(_to)!;
             string output = parse.GetValue(_out)!;
             string? mapPath = parse.GetValue(_map);
-            string modelPath = parse.GetValue(_model) ?? DefaultModel;
+            string modelPath = parse.GetValue(_model) ?? ShippedModels.Find(DefaultModel);
             bool toModel = string.Equals(to, "model", StringComparison.Ordinal);
             double? fps = parse.GetValue(_fps);
             if (fps.HasValue && !(fps.Value > 0 && fps.Value <= 10000))
@@ -162,6 +162,7 @@ namespace DeltaInterpolator.Cli.Verbs
             ReferencePose sourceReference = Reference(source, parse.GetValue(_referenceFrame), "--reference-frame", input);
             ReferencePose modelReference = ReferencePose.ModelTPose(contract.Skeleton);
             JointMap? userMap = mapPath == null ? null : JointMap.Load(mapPath, JointMap.Detect(source.Skeleton, contract.Skeleton));
+            if (userMap != null) MapWarnings.UnknownTargets(userMap, contract.Skeleton, mapPath!);
             SkeletonMap toModelMap = Map(sourceReference, modelReference, userMap, input, scale);
 
             MotionClip sourceMotion = Trim(source.Motion, fromFrame, inputFps, input);
@@ -172,7 +173,7 @@ namespace DeltaInterpolator.Cli.Verbs
             {
                 double frameTime = 1.0 / (fps ?? contract.FramesPerSecond);
                 // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the same rate, kept as written.
-                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime) : onModel;
+                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, input) : onModel;
                 result = ModelAnimation(resampled, output);
             }
             else
@@ -182,8 +183,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 fromModelMap = Map(otherReference, modelReference, userMap, to);
                 MotionClip otherPose = OneFrame(other.Skeleton, otherReference, source.Motion.FrameTime);
                 MotionClip onOther = fromModelMap.ToSource(onModel, otherPose);
-                if (inputFps.HasValue && !fps.HasValue) onOther = MotionResampler.Resample(onOther, source.Motion.FrameTime);
-                if (fps.HasValue) onOther = MotionResampler.Resample(onOther, 1.0 / fps.Value);
+                if (inputFps.HasValue && !fps.HasValue) onOther = MotionResampler.Resample(onOther, source.Motion.FrameTime, input);
+                if (fps.HasValue) onOther = MotionResampler.Resample(onOther, 1.0 / fps.Value, input);
                 result = new BvhAnimation(onOther, other.JointChannels, other.EndSites, output);
             }
 
@@ -218,7 +219,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private static void RequireFile(string path, string what)
         {
-            if (!File.Exists(path)) throw new CliErrors.UsageException($"{path}: no such file; expected {what}");
+            InputFile.Check(path, what); // a folder, a named pipe or a device is refused as such, before it is opened
         }
 
         private static ModelContract ReadContract(string modelPath)
@@ -301,7 +302,7 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
             table.AddRow("Made up (synthesized)", Markup.Escape(toModel.SynthesizedJoints.Count == 0 ? "none"
                 : string.Join(", ", toModel.SynthesizedJoints) + ": the input lacks them; each is a rigid child of its parent at the model's T-pose offset"));
-            table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : string.Join(", ", toModel.UnmappedSourceJoints)));
+            table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : MapWarnings.NameList(toModel.UnmappedSourceJoints)));
             table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "× {0:0.#####} {3}(model leg {1:0.##} ÷ input leg {2:0.###}: root height above the lowest joint in each reference pose)",
                 toModel.RootScale, toModel.TargetLegLength, toModel.SourceLegLength, scaleGiven ? "as given by --scale " : "")));

@@ -156,7 +156,14 @@ namespace DeltaInterpolator.Cli.Verbs
             var keys = new int[inputKeys.Length];
             for (int i = 0; i < inputKeys.Length; i++)
             {
-                keys[i] = (int)Math.Round((inputKeys[i] - inputKeys[0]) * inputFrameTime / _modelFrameTime, MidpointRounding.AwayFromZero);
+                double key = Math.Round((inputKeys[i] - inputKeys[0]) * inputFrameTime / _modelFrameTime, MidpointRounding.AwayFromZero);
+                if (i == inputKeys.Length - 1 || !(key < int.MaxValue))
+                {
+                    // Before anything is allocated: a huge Frame Time would ask for gigabytes of model frames.
+                    MotionResampler.CheckLength(key + 1, _map.Target.JointCount, inputKeys[inputKeys.Length - 1] - inputKeys[0] + 1, inputFrameTime, _modelFrameTime, _inputPath);
+                }
+
+                keys[i] = (int)key;
                 if (i > 0 && keys[i] <= keys[i - 1])
                 {
                     // BVH files round their frame time (CMU: 0.008333 s), so 4.0002 input frames per model frame means 4.

@@ -28,7 +28,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly ModelOptions _model = new ModelOptions(
             "speed",
-            "The exported model (NAME.onnx; NAME.keys.onnx and NAME.frame.onnx beside it time lazy decoding). Default: the shipped Runtime/Models/DeltaInterpolator-LaFAN1.onnx.",
+            "The exported model (NAME.onnx; NAME.keys.onnx and NAME.frame.onnx beside it time lazy decoding). Default: the shipped " + ShippedModels.Default + ".",
             "Intra-op threads, for ONNX Runtime and (with --pytorch) torch alike.",
             1,
             "1 or more (the same count is given to torch)");
@@ -43,6 +43,12 @@ namespace DeltaInterpolator.Cli.Verbs
             Description = "Timed repetitions per measurement (after a warm-up); fewer when a measurement exceeds its time budget.",
             HelpName = "N",
             DefaultValueFactory = _ => 500,
+        };
+
+        private readonly Option<int> _characters = new Option<int>("--characters")
+        {
+            Description = "characters of the crowd benchmark (all request a transition in the same frame; the JSON's \"crowd\" object); 0 skips it",
+            DefaultValueFactory = _ => 64,
         };
 
         private readonly Option<string> _json = new Option<string>("--json")
@@ -74,6 +80,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_pytorch);
             command.Options.Add(_repeats);
             command.Options.Add(_json);
+            command.Options.Add(_characters);
             _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
@@ -88,7 +95,7 @@ namespace DeltaInterpolator.Cli.Verbs
             if (repeats < 10) throw new CliErrors.UsageException($"inbetween speed: --repeats {repeats}; expected at least 10");
             string? root = RepositoryRoot();
             string? given = parse.GetValue(_model.Model);
-            string modelPath = given ?? (root == null ? "Runtime/Models/DeltaInterpolator-LaFAN1.onnx" : Path.Combine(root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx"));
+            string modelPath = given ?? (root == null ? ShippedModels.Find(ShippedModels.Default) : Path.Combine(root, ShippedModels.Default));
             if (given == null && !File.Exists(modelPath))
             {
                 throw new CliErrors.UsageException($"{modelPath}: the shipped model is not there; expected it after export (python3 -m deltainterp export), or pass --model FILE.onnx");
@@ -179,6 +186,16 @@ namespace DeltaInterpolator.Cli.Verbs
                 results["pytorch_transition_ms"] = null;
                 results["speedup_vs_pytorch"] = null;
                 results["paper_pytorch_transition_ms"] = null;
+            }
+
+            int characters = parse.GetValue(_characters);
+            if (characters < 0) throw new CliErrors.UsageException($"inbetween speed: --characters {characters}; expected 0 (skip) or more");
+            if (characters > 0 && model.SupportsLazyDecoding)
+            {
+                AnsiConsole.MarkupLine(Markup.Escape($"Crowd: {characters} characters requesting a transition in the same frame..."));
+                JsonObject crowd = CrowdBenchmark.Run(modelPath, options, characters);
+                results["crowd"] = crowd;
+                AnsiConsole.MarkupLine(Markup.Escape("crowd: " + crowd.ToJsonString()));
             }
 
             OutputFile.WriteAllText(jsonPath, results.ToJsonString(new JsonSerializerOptions { WriteIndented = true }));

@@ -25,7 +25,7 @@ namespace DeltaInterpolator.Tests.Cli
 
         private static string Root => TestEnvironment.RepositoryRoot!;
 
-        private static string Sample => Path.Combine(Root, "Samples~", "Demo", "cmu_01_01_jumps_turn.bvh");
+        private static string Sample => Path.Combine(Root, "Samples~", "Demo", "cmu_09_12_walk_navigate.bvh");
 
         [SetUp]
         public void CreateFolder()

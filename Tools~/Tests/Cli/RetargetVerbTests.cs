@@ -126,12 +126,24 @@ namespace DeltaInterpolator.Tests.Cli
         [Test]
         public void MissingJointsAreNamedAndNothingIsWritten()
         {
-            string input = WriteSource("no_toes.bvh", ("LeftToe", "LeftToeTip"), ("RightToe", "RightToeTip"));
+            // Knees cannot be made up (toes can: MissingToesAreMadeUpAndNamed).
+            string input = WriteSource("no_knees.bvh", ("LeftLeg", "LeftKnee"), ("RightLeg", "RightKnee"));
             string output = Path.Combine(_dir, "out.bvh");
             (int code, string error) = Run("retarget", input, "--to", "model", "--out", output, "--model", _model);
             Assert.That(code, Is.EqualTo(2));
-            AssertOneLine(error, input + ": ", "LeftToe", "RightToe", "--map");
+            AssertOneLine(error, input + ": ", "LeftLeg", "RightLeg", "--map");
             Assert.That(File.Exists(output), Is.False);
+        }
+
+        [Test]
+        public void MissingToesAreMadeUpAndNamed()
+        {
+            string input = WriteSource("no_toes.bvh", ("LeftToe", "LeftToeTip"), ("RightToe", "RightToeTip"));
+            string output = Path.Combine(_dir, "out.bvh");
+            CliRun run = CliHarness.Run("retarget", input, "--to", "model", "--out", output, "--model", _model);
+            CliHarness.AssertSuccess(run);
+            Assert.That(string.Join(" ", run.Stdout.Split((char[]?)null, StringSplitOptions.RemoveEmptyEntries)), Does.Contain("LeftToe, RightToe: the input lacks them"));
+            Assert.That(BvhReader.Read(output).Skeleton.JointCount, Is.EqualTo(22));
         }
 
         [Test]
