@@ -556,7 +556,12 @@ namespace DeltaInterpolator.Core.Retargeting
             return longest;
         }
 
-        private static double LegLength(ReferencePose pose, int[] joints, int root)
+        /// <summary>
+        /// A skeleton's leg length as retargeting measures it: the height of <paramref name="root"/> above the
+        /// lowest of <paramref name="joints"/> in <paramref name="pose"/> (Y up). Foot locking and the foot-skating
+        /// measure use the same length, so their thresholds scale with the character as the root does.
+        /// </summary>
+        internal static double LegLength(ReferencePose pose, IReadOnlyList<int> joints, int root)
         {
             double lowest = double.PositiveInfinity;
             foreach (int j in joints) lowest = Math.Min(lowest, pose.GlobalPosition(j).Y);

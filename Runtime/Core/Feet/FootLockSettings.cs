@@ -1,0 +1,73 @@
+using System;
+
+namespace DeltaInterpolator.Core.Feet
+{
+    /// <summary>
+    /// When a foot counts as planted and how locking eases in and out. Heights are in leg lengths above the
+    /// foot joint's planted height (its height above the ground when it stands), speeds in leg lengths per
+    /// second, so the same settings fit any character, unit and frame rate.
+    /// </summary>
+    /// <remarks>
+    /// Hysteresis: a foot joint becomes planted when it is below <see cref="EnterHeight"/> and slower than
+    /// <see cref="EnterSpeed"/>, and stays planted until it rises above <see cref="ExitHeight"/> or moves faster
+    /// than <see cref="ExitSpeed"/>, so that it does not flicker on the thresholds. The speeds are generous
+    /// on purpose: the filled motion's stance feet slide (that is what locking removes), its swinging feet
+    /// move at several leg lengths per second.
+    /// </remarks>
+    public sealed class FootLockSettings
+    {
+        /// <summary>Height (leg lengths above the planted height) under which a foot joint may become planted.</summary>
+        public double EnterHeight { get; set; } = 0.02;
+
+        /// <summary>Height (leg lengths above the planted height) above which a planted foot joint is released.</summary>
+        public double ExitHeight { get; set; } = 0.06;
+
+        /// <summary>Speed (leg lengths per second) under which a foot joint may become planted.</summary>
+        public double EnterSpeed { get; set; } = 0.5;
+
+        /// <summary>Speed (leg lengths per second) above which a planted foot joint is released.</summary>
+        public double ExitSpeed { get; set; } = 1.0;
+
+        /// <summary>
+        /// How far (leg lengths, horizontally) the filled motion may carry a foot joint from where a key plants it
+        /// before the contact ends: past it the foot has stepped away, and it is let go.
+        /// </summary>
+        public double HoldDistance { get; set; } = 0.3;
+
+        /// <summary>
+        /// Two keys that plant a foot joint within this distance (leg lengths) of each other make one
+        /// contact across their gap (held on the line between the two spots), unless the filled motion lifts the joint
+        /// higher than <see cref="StepHeight"/> in between. Farther apart, each key holds it on its own side of the gap.
+        /// </summary>
+        public double BridgeDistance { get; set; } = 0.01;
+
+        /// <summary>Height (leg lengths) that breaks a bridge between two keys (<see cref="BridgeDistance"/>): a step in place.</summary>
+        public double StepHeight { get; set; } = 0.1;
+
+        /// <summary>Seconds over which locking eases in before a contact and out after it (at least one frame).</summary>
+        public double EaseSeconds { get; set; } = 0.15;
+
+        /// <summary>Contacts shorter than this many seconds are ignored (a foot brushing the ground).</summary>
+        public double MinContactSeconds { get; set; } = 0.05;
+
+        /// <summary>
+        /// A planted foot whose target lies farther from the hip than this fraction of thigh + shin is released
+        /// (eased out) rather than stretched.
+        /// </summary>
+        public double MaxReach { get; set; } = 0.995;
+
+        /// <summary>Throws when a value is out of range; called by <see cref="FootLocker"/>.</summary>
+        /// <exception cref="ArgumentOutOfRangeException">A threshold is negative, an exit threshold is below its entry, or the reach is not in (0, 1].</exception>
+        public void Validate()
+        {
+            if (!(EnterHeight >= 0) || !(ExitHeight >= EnterHeight)) throw new ArgumentOutOfRangeException(nameof(ExitHeight), $"heights {EnterHeight} (enter) and {ExitHeight} (exit); expected 0 ≤ enter ≤ exit");
+            if (!(EnterSpeed >= 0) || !(ExitSpeed >= EnterSpeed)) throw new ArgumentOutOfRangeException(nameof(ExitSpeed), $"speeds {EnterSpeed} (enter) and {ExitSpeed} (exit); expected 0 ≤ enter ≤ exit");
+            if (!(HoldDistance >= 0) || double.IsInfinity(HoldDistance)) throw new ArgumentOutOfRangeException(nameof(HoldDistance), $"hold distance {HoldDistance}; expected a non-negative number of leg lengths");
+            if (!(BridgeDistance >= 0) || double.IsInfinity(BridgeDistance)) throw new ArgumentOutOfRangeException(nameof(BridgeDistance), $"bridge distance {BridgeDistance}; expected a non-negative number of leg lengths");
+            if (!(StepHeight >= 0) || double.IsInfinity(StepHeight)) throw new ArgumentOutOfRangeException(nameof(StepHeight), $"step height {StepHeight}; expected a non-negative number of leg lengths");
+            if (!(EaseSeconds >= 0) || double.IsInfinity(EaseSeconds)) throw new ArgumentOutOfRangeException(nameof(EaseSeconds), $"ease {EaseSeconds} s; expected a non-negative number of seconds");
+            if (!(MinContactSeconds >= 0) || double.IsInfinity(MinContactSeconds)) throw new ArgumentOutOfRangeException(nameof(MinContactSeconds), $"minimum contact {MinContactSeconds} s; expected a non-negative number of seconds");
+            if (!(MaxReach > 0) || MaxReach > 1) throw new ArgumentOutOfRangeException(nameof(MaxReach), $"reach {MaxReach}; expected a fraction in (0, 1]");
+        }
+    }
+}

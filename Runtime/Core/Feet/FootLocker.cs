@@ -1,0 +1,756 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Feet
+{
+    /// <summary>
+    /// Keeps planted feet still in filled motion: labels each foot joint's contacts (heel = ankle, toe) on
+    /// every frame from the key frames and the filled motion, holds a planted joint where it stands, and
+    /// solves each leg with analytic two-bone IK (<see cref="TwoBoneIk"/>), easing in before and out after
+    /// every contact. Key frames are never changed.
+    /// </summary>
+    /// <remarks>
+    /// <para><b>Ground.</b> At each key the ground is the lowest foot joint's height; a key whose ground lies
+    /// above the mean of its neighbours' (a jump or a run's flight) takes that mean instead. Between keys it
+    /// is interpolated linearly, so slopes and steps are followed key by key. Each foot joint's planted height
+    /// is its own: the 10th percentile over the keys of its height above the ground, capped at its height in
+    /// the rig's flat-footed stance (an ankle stands a few centimetres up, a toe on the ground), so that a foot
+    /// that never touches down is never planted in the air.</para>
+    /// <para><b>Contacts.</b> Per foot joint, with hysteresis (<see cref="FootLockSettings"/>): planted below
+    /// the entry height and speed, released above the exit height or speed; contacts shorter than
+    /// <see cref="FootLockSettings.MinContactSeconds"/> are dropped.</para>
+    /// <para><b>Where a planted joint is held.</b> A contact that spans key frames holds the joint where the
+    /// keys have it (interpolated linearly from key to key, so it meets every key exactly); any other contact
+    /// holds it at its mean position over the contact, its height kept within 1 % of a leg length of its planted
+    /// height above the ground there. A contact whose target the leg cannot reach (farther from the hip than
+    /// <see cref="FootLockSettings.MaxReach"/> of thigh + shin) is cut there: the foot is released, not
+    /// stretched.</para>
+    /// <para><b>Solving a leg.</b> Heel planted: the ankle goes to its target, the foot keeps its global
+    /// orientation (and, when the toe is planted too, turns about the ankle to point at the toe's target).
+    /// Toe only (a rolling foot): the ankle goes where the kept foot orientation puts the toe on its target.
+    /// The knee stays in the leg's plane; only the thigh, knee and foot rotations of non-key frames change.
+    /// A rig whose toe was synthesized (rigid to the foot) is handled the same way.</para>
+    /// <para>Buffers grow to the longest clip seen and are reused; <see cref="LockFrame"/> allocates nothing.
+    /// Not thread-safe.</para>
+    /// </remarks>
+    public sealed class FootLocker
+    {
+        /// <summary>Contact channels: left ankle, left toe, right ankle, right toe (channel = 2 × side + toe).</summary>
+        public const int ChannelCount = 4;
+
+        private readonly FootRig _rig;
+        private readonly FootLockSettings _settings;
+        private readonly double[] _globalPositions;
+        private readonly double[] _globalRotations;
+        private readonly int[] _channelJoint = new int[ChannelCount];
+        private readonly double[] _maxPlantedHeight = new double[ChannelCount];
+        private readonly double[] _plantedHeight = new double[ChannelCount];
+        private readonly double[] _thigh = new double[2];
+        private readonly double[] _shin = new double[2];
+
+        private IReadOnlyList<int>? _keys;
+        private int _capacity;
+        private int _frames;
+        private double[] _feet = Array.Empty<double>();     // channel × capacity × 3: original foot joint positions
+        private double[] _hips = Array.Empty<double>();     // side × capacity × 3: original hip (thigh joint) positions
+        private double[] _toeVector = Array.Empty<double>(); // side × capacity × 3: toe − ankle, original
+        private double[] _ground = Array.Empty<double>();   // channel × capacity: the ground under the joint's (unlocked) position
+        private double[] _support = Array.Empty<double>();  // per key: x, z of its lowest foot joint and the ground height there
+        private int[] _gap = Array.Empty<int>();            // capacity: index of the key starting the frame's gap
+        private int[] _segment = Array.Empty<int>();        // channel × capacity: contact id (0: none; one id per contact)
+        private double[] _rise = Array.Empty<double>();     // capacity: the channel being planned, height above its planted height
+        private double[] _anchor = Array.Empty<double>();   // channel × capacity × 3
+        private double[] _weight = Array.Empty<double>();   // channel × capacity
+        private bool[] _isKey = Array.Empty<bool>();        // capacity
+        private double[] _scratch = Array.Empty<double>();  // 3 × capacity
+
+        /// <summary>Creates a locker for a rig (usually <see cref="FootRig.ForModel"/>).</summary>
+        /// <exception cref="ArgumentException">A leg is not a chain thigh → knee → ankle (→ toe).</exception>
+        public FootLocker(FootRig rig, FootLockSettings? settings = null)
+        {
+            _rig = rig ?? throw new ArgumentNullException(nameof(rig));
+            _settings = settings ?? new FootLockSettings();
+            _settings.Validate();
+            Skeleton s = rig.Skeleton;
+            for (int side = 0; side < 2; side++)
+            {
+                Leg leg = rig[side];
+                if (s.Parents[leg.Knee] != leg.Hip || s.Parents[leg.Ankle] != leg.Knee || (leg.HasToe && s.Parents[leg.Toe] != leg.Ankle))
+                {
+                    throw new ArgumentException($"the {(side == 0 ? "left" : "right")} leg ({s.Names[leg.Hip]}, {s.Names[leg.Knee]}, {s.Names[leg.Ankle]}) is not a chain of parent and child joints; expected thigh → knee → ankle (→ toe), as on the model's skeleton", nameof(rig));
+                }
+
+                _channelJoint[2 * side] = leg.Ankle;
+                _channelJoint[2 * side + 1] = leg.HasToe ? leg.Toe : -1;
+            }
+
+            _globalPositions = new double[3 * s.JointCount];
+            _globalRotations = new double[4 * s.JointCount];
+            StandingHeights(rig, _maxPlantedHeight);
+        }
+
+        /// <summary>The rig.</summary>
+        public FootRig Rig => _rig;
+
+        /// <summary>The settings (validated on construction; do not change them afterwards).</summary>
+        public FootLockSettings Settings => _settings;
+
+        /// <summary>Frames of the last clip labelled or locked.</summary>
+        public int FrameCount => _frames;
+
+        /// <summary>
+        /// After <see cref="Lock"/> or <see cref="Plan"/>: whether foot joint <paramref name="channel"/> (0 left ankle,
+        /// 1 left toe, 2 right ankle, 3 right toe) is planted on <paramref name="frame"/>.
+        /// </summary>
+        public bool IsPlanted(int frame, int channel)
+        {
+            if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
+            if ((uint)channel >= ChannelCount) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
+            return _segment[channel * _capacity + frame] != 0;
+        }
+
+        /// <summary>After <see cref="Plan"/>: how strongly (0..1) foot joint <paramref name="channel"/> is held on <paramref name="frame"/>.</summary>
+        public double LockWeight(int frame, int channel)
+        {
+            if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
+            if ((uint)channel >= ChannelCount) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
+            return _weight[channel * _capacity + frame];
+        }
+
+        /// <summary>After <see cref="Plan"/>: the ground height the locker estimated under foot joint <paramref name="channel"/> on <paramref name="frame"/>.</summary>
+        public double GroundHeight(int frame, int channel)
+        {
+            if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
+            if ((uint)channel >= ChannelCount) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
+            return _ground[channel * _capacity + frame];
+        }
+
+        /// <summary>After <see cref="Plan"/>: foot joint <paramref name="channel"/>'s planted height above the ground (clip units).</summary>
+        public double PlantedHeight(int channel) => _plantedHeight[channel];
+
+        /// <summary>Plans and locks every non-key frame of <paramref name="clip"/> in place.</summary>
+        /// <param name="clip">Motion on the rig's skeleton (e.g. a bake: key frames and filled frames).</param>
+        /// <param name="keys">Frame indices of <paramref name="clip"/> that are keys (increasing, at least one): never changed, and the source of the ground.</param>
+        public void Lock(MotionClip clip, IReadOnlyList<int> keys)
+        {
+            Plan(clip, keys);
+            for (int f = 0; f < _frames; f++)
+            {
+                if (_isKey[f]) continue;
+                LockFrame(f, clip.LocalPositions.AsSpan(clip.PositionIndex(f, 0), 3 * clip.Skeleton.JointCount), clip.LocalRotations.AsSpan(clip.RotationIndex(f, 0), 4 * clip.Skeleton.JointCount));
+            }
+        }
+
+        /// <summary>
+        /// Labels contacts and chooses where each planted joint is held on every frame of <paramref name="clip"/>,
+        /// without changing it; <see cref="LockFrame"/> then applies one frame.
+        /// </summary>
+        public void Plan(MotionClip clip, IReadOnlyList<int> keys)
+        {
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (keys == null || keys.Count == 0) throw new ArgumentException("expected at least one key frame", nameof(keys));
+            if (!clip.Skeleton.HasSameHierarchy(_rig.Skeleton)) throw new ArgumentException("the clip is not on the rig's skeleton", nameof(clip));
+            int frames = clip.FrameCount;
+            Reserve(frames);
+            _frames = frames;
+            Array.Clear(_isKey, 0, _capacity);
+            for (int i = 0; i < keys.Count; i++)
+            {
+                int k = keys[i];
+                if ((uint)k >= (uint)frames) throw new ArgumentOutOfRangeException(nameof(keys), $"key {k} is not a frame of the clip (0..{frames - 1})");
+                if (i > 0 && k <= keys[i - 1]) throw new ArgumentException($"key {k} after {keys[i - 1]}; expected increasing key frames", nameof(keys));
+                _isKey[k] = true;
+            }
+
+            ReadFrames(clip);
+            _keys = keys;
+            EstimateGround(keys);
+            double leg = _rig.LegLength;
+            double dt = clip.FrameTime;
+            int minFrames = Math.Max(1, (int)Math.Round(_settings.MinContactSeconds / dt));
+            int ease = Math.Max(1, (int)Math.Round(_settings.EaseSeconds / dt));
+            Array.Clear(_segment, 0, _segment.Length);
+            Array.Clear(_weight, 0, _weight.Length);
+            for (int c = 0; c < ChannelCount; c++)
+            {
+                if (_channelJoint[c] < 0) continue;
+                int row = c * _capacity;
+                for (int f = 0; f < frames; f++) _ground[row + f] = GroundAt(_feet[(row + f) * 3], _feet[(row + f) * 3 + 2], f, keys);
+                _plantedHeight[c] = PlantedHeightOf(c, leg, keys);
+                for (int f = 0; f < frames; f++) _rise[f] = _feet[(row + f) * 3 + 1] - _ground[row + f] - _plantedHeight[c];
+                int next = 1;
+                LabelFromKeys(c, leg, keys, ease, ref next);
+                LabelFree(c, leg, dt, minFrames, ref next);
+                Separate(c, ease);
+                Anchor(c, leg);
+                if (ReleaseUnreachable(c)) Anchor(c, leg);
+                Ease(c, ease);
+            }
+
+            _keys = null;
+        }
+
+        /// <summary>
+        /// Locks one frame in place (allocation-free): after <see cref="Plan"/>, moves the legs of frame
+        /// <paramref name="frame"/> so that its planted joints reach their targets. Changes the thigh, knee and
+        /// ankle rotations of a leg with a planted joint; nothing else.
+        /// </summary>
+        /// <param name="frame">A frame of the planned clip.</param>
+        /// <param name="localPositions">That frame's joints × 3 local translations (the root's is its position).</param>
+        /// <param name="localRotations">That frame's joints × 4 local rotations, changed in place.</param>
+        public void LockFrame(int frame, ReadOnlySpan<double> localPositions, Span<double> localRotations)
+        {
+            if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
+            int cap = _capacity;
+            bool any = false;
+            for (int c = 0; c < ChannelCount; c++) any |= _weight[c * cap + frame] > 0;
+            if (!any) return;
+
+            Skeleton s = _rig.Skeleton;
+            ForwardKinematics.ComputeFrame(s.ParentSpan, localPositions, Vector3D.Read(localPositions, 0), localRotations, _globalPositions, _globalRotations);
+            for (int side = 0; side < 2; side++)
+            {
+                double wa = _weight[(2 * side) * cap + frame];
+                double wt = _weight[(2 * side + 1) * cap + frame];
+                if (wa <= 0 && wt <= 0) continue;
+                Leg leg = _rig[side];
+                Vector3D ankle = Vector3D.Read(_globalPositions, 3 * leg.Ankle);
+                QuaternionD foot = QuaternionD.Read(_globalRotations, 4 * leg.Ankle);
+                Vector3D toeVector = leg.HasToe ? Vector3D.Read(_globalPositions, 3 * leg.Toe) - ankle : Vector3D.Zero;
+                // Heel: the ankle towards its target, the foot's orientation kept (the toe carried along).
+                Vector3D heel = wa > 0 ? Lerp(ankle, Vector3D.Read(_anchor, ((2 * side) * cap + frame) * 3), wa) : ankle;
+                Vector3D target = heel;
+                QuaternionD footWanted = foot;
+                if (wt > 0)
+                {
+                    // Toe: a rolling foot (heel free) keeps its orientation and is carried so that the toe lands on its
+                    // target; with the heel planted too the foot lies along the line from heel to toe target, the ankle
+                    // on it at the foot's length from the toe (the more held of the two joints is the one that is exact).
+                    double length = toeVector.Length;
+                    Vector3D toeGoal = Lerp(heel + toeVector, Vector3D.Read(_anchor, ((2 * side + 1) * cap + frame) * 3), wt);
+                    Vector3D carried = toeGoal - toeVector;
+                    Vector3D along = toeGoal - heel;
+                    double span = along.Length;
+                    if (wa > 0 && span > 1e-9 * length)
+                    {
+                        Vector3D unit = (1.0 / span) * along;
+                        Vector3D heelExact = heel, toeExact = toeGoal - length * unit;
+                        // The more held joint is exact (the toe on a tie): the other lies on the line, a foot's length away.
+                        Vector3D flat = wt >= wa ? toeExact : heelExact;
+                        target = Lerp(carried, flat, wa);
+                        if (wt >= wa)
+                        {
+                            // Back onto the sphere about the toe's target: the toe stays exact however the heel eases.
+                            Vector3D arm = target - toeGoal;
+                            double armLength = arm.Length;
+                            if (armLength > 1e-9 * length) target = toeGoal + (length / armLength) * arm;
+                        }
+                    }
+                    else
+                    {
+                        target = carried;
+                    }
+
+                    footWanted = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(toeVector, toeGoal - target, Vector3D.UnitY), foot));
+                }
+
+                SolveLeg(leg, target, footWanted, toeVector, localRotations);
+            }
+        }
+
+        private void SolveLeg(Leg leg, Vector3D target, QuaternionD footWanted, Vector3D toeVector, Span<double> localRotations)
+        {
+            Skeleton s = _rig.Skeleton;
+            int parent = s.Parents[leg.Hip];
+            Vector3D hip = Vector3D.Read(_globalPositions, 3 * leg.Hip);
+            Vector3D knee = Vector3D.Read(_globalPositions, 3 * leg.Knee);
+            Vector3D ankle = Vector3D.Read(_globalPositions, 3 * leg.Ankle);
+            QuaternionD hipGlobal = QuaternionD.Read(_globalRotations, 4 * leg.Hip);
+            QuaternionD kneeGlobal = QuaternionD.Read(_globalRotations, 4 * leg.Knee);
+            // A straight knee bends towards where the foot points (or, without a toe, the root's forward +Z).
+            Vector3D hint = leg.HasToe ? toeVector : Quaternions.Apply(QuaternionD.Read(_globalRotations, 0), Vector3D.UnitZ);
+            TwoBoneIk.Solve(hip, knee, ankle, hipGlobal, kneeGlobal, target, hint, out QuaternionD newHip, out QuaternionD newKnee);
+            QuaternionD parentGlobal = QuaternionD.Read(_globalRotations, 4 * parent);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(parentGlobal), newHip)).Write(localRotations, 4 * leg.Hip);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newHip), newKnee)).Write(localRotations, 4 * leg.Knee);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newKnee), footWanted)).Write(localRotations, 4 * leg.Ankle);
+        }
+
+        private void Reserve(int frames)
+        {
+            if (frames <= _capacity) return;
+            int cap = Math.Max(frames, 2 * _capacity);
+            _capacity = cap;
+            _feet = new double[ChannelCount * cap * 3];
+            _hips = new double[2 * cap * 3];
+            _toeVector = new double[2 * cap * 3];
+            _ground = new double[ChannelCount * cap];
+            _support = new double[3 * cap];
+            _gap = new int[cap];
+            _segment = new int[ChannelCount * cap];
+            _rise = new double[cap];
+            _anchor = new double[ChannelCount * cap * 3];
+            _weight = new double[ChannelCount * cap];
+            _isKey = new bool[cap];
+            _scratch = new double[3 * cap];
+        }
+
+        /// <summary>FK of every frame: foot joint and hip positions, toe vectors.</summary>
+        private void ReadFrames(MotionClip clip)
+        {
+            Skeleton s = clip.Skeleton;
+            int j = s.JointCount, cap = _capacity;
+            for (int f = 0; f < _frames; f++)
+            {
+                ReadOnlySpan<double> lp = clip.LocalPositions.AsSpan(clip.PositionIndex(f, 0), 3 * j);
+                ForwardKinematics.ComputeFrame(s.ParentSpan, lp, Vector3D.Read(lp, 0), clip.LocalRotations.AsSpan(clip.RotationIndex(f, 0), 4 * j), _globalPositions, _globalRotations);
+                for (int c = 0; c < ChannelCount; c++)
+                {
+                    if (_channelJoint[c] >= 0) Array.Copy(_globalPositions, 3 * _channelJoint[c], _feet, (c * cap + f) * 3, 3);
+                }
+
+                for (int side = 0; side < 2; side++)
+                {
+                    Leg leg = _rig[side];
+                    Array.Copy(_globalPositions, 3 * leg.Hip, _hips, (side * cap + f) * 3, 3);
+                    Vector3D toe = leg.HasToe ? Vector3D.Read(_globalPositions, 3 * leg.Toe) - Vector3D.Read(_globalPositions, 3 * leg.Ankle) : Vector3D.Zero;
+                    toe.Write(_toeVector, (side * cap + f) * 3);
+                    if (f == 0)
+                    {
+                        _thigh[side] = (Vector3D.Read(_globalPositions, 3 * leg.Knee) - Vector3D.Read(_globalPositions, 3 * leg.Hip)).Length;
+                        _shin[side] = (Vector3D.Read(_globalPositions, 3 * leg.Ankle) - Vector3D.Read(_globalPositions, 3 * leg.Knee)).Length;
+                    }
+                }
+            }
+        }
+
+        /// <summary>
+        /// Where the ground is at each key: the lowest foot joint's height and horizontal position (a key whose lowest
+        /// joint is above its neighbours' mean, in a jump or a run's flight, takes that mean); each frame's gap.
+        /// </summary>
+        private void EstimateGround(IReadOnlyList<int> keys)
+        {
+            int n = keys.Count;
+            for (int i = 0; i < n; i++) Support(i, LowestFoot(keys[i], 0, 0, 0), keys[i]);
+
+            // On a slope a foot swinging behind may be lower than the one planted ahead: pick again the lowest
+            // foot joint relative to the slope the first guess shows around each key (the previous values are in _scratch).
+            double[] first = _scratch;
+            Array.Copy(_support, first, 3 * n);
+            for (int i = 0; i < n; i++)
+            {
+                int p = Math.Max(0, i - 1), q = Math.Min(n - 1, i + 1);
+                double dx = first[3 * q] - first[3 * p], dz = first[3 * q + 1] - first[3 * p + 1];
+                double d = Math.Sqrt(dx * dx + dz * dz);
+                if (d < 0.25 * _rig.LegLength) continue;
+                double slope = Math.Max(-0.5, Math.Min(0.5, (first[3 * q + 2] - first[3 * p + 2]) / d));
+                Support(i, LowestFoot(keys[i], slope, dx / d, dz / d), keys[i]);
+            }
+
+            double previous = _support[2];
+            for (int i = 0; i < n; i++)
+            {
+                double here = _support[3 * i + 2];
+                double around = n == 1 ? here : i == 0 ? _support[3 * 1 + 2] : i == n - 1 ? previous : 0.5 * (previous + _support[3 * (i + 1) + 2]);
+                previous = here;
+                _support[3 * i + 2] = Math.Min(here, around);
+            }
+
+            int gap = 0;
+            for (int f = 0; f < _frames; f++)
+            {
+                while (gap + 2 < n && f > keys[gap + 1]) gap++;
+                _gap[f] = gap;
+            }
+        }
+
+        /// <summary>
+        /// The ground height at horizontal position (x, z) on frame f: on the line through the two keys' ground points
+        /// around the frame (so a slope is followed under each foot), or, when those points are close together, their
+        /// heights interpolated in time.
+        /// </summary>
+        private double GroundAt(double x, double z, int f, IReadOnlyList<int> keys)
+        {
+            int n = keys.Count;
+            if (n == 1) return _support[2];
+            int i = _gap[f];
+            int a = keys[i], b = keys[i + 1];
+            double ax = _support[3 * i], az = _support[3 * i + 1], ga = _support[3 * i + 2];
+            double dx = _support[3 * (i + 1)] - ax, dz = _support[3 * (i + 1) + 1] - az, gb = _support[3 * (i + 1) + 2];
+            double d = Math.Sqrt(dx * dx + dz * dz);
+            if (d < 0.25 * _rig.LegLength)
+            {
+                double t = Math.Max(0, Math.Min(1, (f - a) / (double)(b - a)));
+                return ga + t * (gb - ga);
+            }
+
+            double slope = Math.Max(-0.5, Math.Min(0.5, (gb - ga) / d));
+            double u = Math.Max(-d, Math.Min(2 * d, ((x - ax) * dx + (z - az) * dz) / d));
+            return ga + slope * u;
+        }
+
+        /// <summary>The channel of the lowest foot joint on a frame, heights measured from a plane rising by <paramref name="slope"/> along (dx, dz).</summary>
+        private int LowestFoot(int frame, double slope, double dx, double dz)
+        {
+            int lowest = -1;
+            double best = double.PositiveInfinity;
+            for (int c = 0; c < ChannelCount; c++)
+            {
+                if (_channelJoint[c] < 0) continue;
+                int i = (c * _capacity + frame) * 3;
+                double height = _feet[i + 1] - slope * (_feet[i] * dx + _feet[i + 2] * dz);
+                if (height < best)
+                {
+                    best = height;
+                    lowest = c;
+                }
+            }
+
+            return lowest;
+        }
+
+        private void Support(int key, int channel, int frame)
+        {
+            int at = (channel * _capacity + frame) * 3;
+            _support[3 * key] = _feet[at];
+            _support[3 * key + 1] = _feet[at + 2];
+            _support[3 * key + 2] = _feet[at + 1];
+        }
+
+        /// <summary>The 10th percentile of the joint's height above the ground at the keys, between 1 % of a leg below the ground and its standing height.</summary>
+        private double PlantedHeightOf(int c, double leg, IReadOnlyList<int> keys)
+        {
+            // From the keys only: they are real poses, while filled motion may sink a foot into the floor.
+            double[] h = _scratch;
+            int n = keys.Count;
+            for (int i = 0; i < n; i++) h[i] = _feet[(c * _capacity + keys[i]) * 3 + 1] - _ground[c * _capacity + keys[i]];
+            Array.Sort(h, 0, n);
+            double low = h[(int)(0.1 * (n - 1))];
+            return Math.Max(-0.01 * leg, Math.Min(low, _maxPlantedHeight[c] * leg));
+        }
+
+        /// <summary>
+        /// Contacts that the keys vouch for: a foot joint planted on a key (at most <see cref="FootLockSettings.EnterHeight"/>
+        /// above its planted height there) stays planted into the gaps beside it while the filled motion keeps it
+        /// low and near that spot; two planted keys at the same spot with the foot kept low between them make one
+        /// contact across the gap.
+        /// </summary>
+        private void LabelFromKeys(int c, double leg, IReadOnlyList<int> keys, int ease, ref int next)
+        {
+            int cap = _capacity, row = c * cap;
+            double enter = _settings.EnterHeight * leg, exit = _settings.ExitHeight * leg;
+            double hold = _settings.HoldDistance * leg, step = _settings.StepHeight * leg;
+            int first = keys[0];
+            if (_rise[first] <= enter) _segment[row + first] = next++;
+            // A key's contact carries on into the gap after it only as far as the next key (never over it).
+            for (int i = 0; i + 1 < keys.Count; i++)
+            {
+                int a = keys[i], b = keys[i + 1];
+                bool plantedA = _rise[a] <= enter, plantedB = _rise[b] <= enter;
+                if (plantedA && plantedB && (Vector3D.Read(_feet, (row + a) * 3) - Vector3D.Read(_feet, (row + b) * 3)).Length <= _settings.BridgeDistance * leg && MaxRise(a, b) <= step)
+                {
+                    // One contact across the gap (a foot standing through it).
+                    for (int f = a + 1; f <= b; f++) _segment[row + f] = _segment[row + a];
+                    continue;
+                }
+
+                int backStart = b;
+                if (plantedB)
+                {
+                    int id = next++;
+                    _segment[row + b] = id;
+                    for (int f = b - 1; f > a && _rise[f] <= exit && Horizontal(c, f, b) <= hold; f--)
+                    {
+                        _segment[row + f] = id;
+                        backStart = f;
+                    }
+                }
+
+                if (!plantedA) continue;
+                int forwardEnd = a;
+                for (int f = a + 1; f < backStart && _rise[f] <= exit && Horizontal(c, f, a) <= hold; f++)
+                {
+                    _segment[row + f] = _segment[row + a];
+                    forwardEnd = f;
+                }
+
+                // Two different contacts in one gap: leave room to ease from one to the other.
+                while (plantedB && backStart - forwardEnd - 1 < ease && (forwardEnd > a || backStart < b))
+                {
+                    if (forwardEnd - a >= b - backStart && forwardEnd > a) _segment[row + forwardEnd--] = 0;
+                    else if (backStart < b) _segment[row + backStart++] = 0;
+                    else break;
+                }
+            }
+        }
+
+        /// <summary>
+        /// Contacts the filled motion shows by itself (between keys that are not planted there): with hysteresis
+        /// on height and speed (<see cref="NextPlanted"/>), at least <paramref name="minFrames"/> long; one that
+        /// touches a key's contact joins it.
+        /// </summary>
+        private void LabelFree(int c, double leg, double dt, int minFrames, ref int next)
+        {
+            int cap = _capacity, row = c * cap, n = _frames;
+            bool planted = false;
+            int start = 0;
+            for (int f = 0; f <= n; f++)
+            {
+                // A key joins a free contact only if it is planted by its own height (keys are where contacts are anchored).
+                bool free = f < n && _segment[row + f] == 0 && (!_isKey[f] || _rise[f] <= _settings.EnterHeight * leg);
+                bool now = free && NextPlanted(planted, _rise[f] / leg, HorizontalSpeed(c, f, dt) / leg, _settings);
+                if (now && !planted) start = f;
+                if (planted && !now)
+                {
+                    // A contact start..f-1 ends: it joins a key's contact it touches, else stands alone if long enough.
+                    int id = start > 0 && _segment[row + start - 1] != 0 ? _segment[row + start - 1]
+                        : f < n && _segment[row + f] != 0 ? _segment[row + f]
+                        : f - start >= minFrames ? next++ : 0;
+                    for (int g = start; g < f; g++) _segment[row + g] = id;
+                }
+
+                planted = now;
+            }
+        }
+
+        /// <summary>
+        /// The contact state machine with hysteresis: a joint <paramref name="rise"/> leg lengths above its planted
+        /// height moving at <paramref name="speed"/> leg lengths per second becomes planted below the entry
+        /// thresholds and stays planted until it passes an exit threshold.
+        /// </summary>
+        internal static bool NextPlanted(bool planted, double rise, double speed, FootLockSettings settings) => planted
+            ? rise <= settings.ExitHeight && speed <= settings.ExitSpeed
+            : rise <= settings.EnterHeight && speed <= settings.EnterSpeed;
+
+        private double MaxRise(int a, int b)
+        {
+            double most = double.NegativeInfinity;
+            for (int f = a; f <= b; f++) most = Math.Max(most, _rise[f]);
+            return most;
+        }
+
+        private double Horizontal(int c, int f, int g)
+        {
+            int i = (c * _capacity + f) * 3, j = (c * _capacity + g) * 3;
+            double dx = _feet[i] - _feet[j], dz = _feet[i + 2] - _feet[j + 2];
+            return Math.Sqrt(dx * dx + dz * dz);
+        }
+
+        private double HorizontalSpeed(int c, int f, double dt)
+        {
+            int n = _frames;
+            if (n < 2) return 0;
+            int a = Math.Max(0, f - 1), b = Math.Min(n - 1, f + 1);
+            return Horizontal(c, a, b) / ((b - a) * dt);
+        }
+
+        /// <summary>
+        /// Leaves at least <paramref name="ease"/> frames between two different contacts of channel c (trimming filled
+        /// frames off the longer one), so that the joint eases from one spot to the next instead of jumping.
+        /// </summary>
+        private void Separate(int c, int ease)
+        {
+            int row = c * _capacity, n = _frames;
+            for (int e = 0; e + 1 < n; e++)
+            {
+                int id = _segment[row + e];
+                if (id == 0 || _segment[row + e + 1] == id) continue;
+                int s = e + 1;
+                while (s < n && _segment[row + s] == 0 && s - e - 1 < ease) s++;
+                if (s >= n || _segment[row + s] == 0 || _segment[row + s] == id) continue;
+                // Contact `id` ends at e, another starts at s, fewer than `ease` free frames between them.
+                int other = _segment[row + s];
+                while (s - e - 1 < ease)
+                {
+                    bool trimEnd = !_isKey[e] && _segment[row + e] == id && (RunLength(row, e, -1) >= RunLength(row, s, +1) || _isKey[s] || _segment[row + s] != other);
+                    if (trimEnd) _segment[row + e--] = 0;
+                    else if (!_isKey[s] && _segment[row + s] == other) _segment[row + s++] = 0;
+                    else break;
+                }
+            }
+        }
+
+        /// <summary>Frames of the run containing frame f, counted from f in direction <paramref name="step"/>.</summary>
+        private int RunLength(int row, int f, int step)
+        {
+            int id = _segment[row + f], count = 0;
+            while (f >= 0 && f < _frames && _segment[row + f] == id)
+            {
+                count++;
+                f += step;
+            }
+
+            return count;
+        }
+
+        /// <summary>Where channel c is held on each of its contact frames (per contact: through its keys, or its mean).</summary>
+        private void Anchor(int c, double leg)
+        {
+            int cap = _capacity, row = c * cap, n = _frames;
+            for (int s = 0; s < n;)
+            {
+                int id = _segment[row + s];
+                if (id == 0)
+                {
+                    s++;
+                    continue;
+                }
+
+                int e = s;
+                while (e + 1 < n && _segment[row + e + 1] == id) e++;
+                int firstKey = -1, lastKey = -1;
+                for (int f = s; f <= e; f++)
+                {
+                    if (!_isKey[f]) continue;
+                    if (firstKey < 0) firstKey = f;
+                    lastKey = f;
+                }
+
+                if (firstKey >= 0)
+                {
+                    // Through the keys: held where they have it, linearly from key to key.
+                    int previousKey = firstKey;
+                    for (int f = s; f <= e; f++)
+                    {
+                        int at = (row + f) * 3;
+                        if (f <= firstKey || f >= lastKey)
+                        {
+                            Copy(_feet, (row + (f <= firstKey ? firstKey : lastKey)) * 3, _anchor, at);
+                            continue;
+                        }
+
+                        if (_isKey[f])
+                        {
+                            previousKey = f;
+                            Copy(_feet, at, _anchor, at);
+                            continue;
+                        }
+
+                        int nextKey = f + 1;
+                        while (!_isKey[nextKey]) nextKey++;
+                        double t = (f - previousKey) / (double)(nextKey - previousKey);
+                        Lerp(Vector3D.Read(_feet, (row + previousKey) * 3), Vector3D.Read(_feet, (row + nextKey) * 3), t).Write(_anchor, at);
+                    }
+                }
+                else
+                {
+                    // Between keys: its mean position, at a height near its planted height.
+                    double x = 0, rise = 0, z = 0;
+                    for (int f = s; f <= e; f++)
+                    {
+                        int i = (row + f) * 3;
+                        x += _feet[i];
+                        rise += _rise[f];
+                        z += _feet[i + 2];
+                    }
+
+                    int count = e - s + 1;
+                    rise = Math.Max(-0.01 * leg, Math.Min(0.01 * leg, rise / count));
+                    var held = new Vector3D(x / count, GroundAt(x / count, z / count, s, _keys!) + _plantedHeight[c] + rise, z / count);
+                    for (int f = s; f <= e; f++) held.Write(_anchor, (row + f) * 3);
+                }
+
+                s = e + 1;
+            }
+        }
+
+        /// <summary>Unlabels contact frames whose ankle target lies beyond the leg's reach; true when any was.</summary>
+        private bool ReleaseUnreachable(int c)
+        {
+            int cap = _capacity, side = c / 2;
+            bool toe = (c & 1) == 1;
+            double full = TwoBoneIk.MaxExtension * (_thigh[side] + _shin[side]);
+            double reach = _settings.MaxReach * (_thigh[side] + _shin[side]);
+            bool any = false;
+            for (int f = 0; f < _frames; f++)
+            {
+                if (_segment[c * cap + f] == 0 || _isKey[f]) continue;
+                Vector3D target = Vector3D.Read(_anchor, (c * cap + f) * 3);
+                if (toe) target = target - Vector3D.Read(_toeVector, (side * cap + f) * 3);
+                Vector3D hip = Vector3D.Read(_hips, (side * cap + f) * 3);
+                // A leg already that straight in the motion may stay so (a standing leg); only a longer reach is refused.
+                double now = (Vector3D.Read(_feet, ((2 * side) * cap + f) * 3) - hip).Length;
+                if ((target - hip).Length > Math.Max(reach, Math.Min(now + 1e-3 * _rig.LegLength, full)))
+                {
+                    _segment[c * cap + f] = 0;
+                    any = true;
+                }
+            }
+
+            return any;
+        }
+
+        /// <summary>Weights of channel c: 1 on contact frames, easing to 0 over <paramref name="ease"/> frames before and after, never across a key or into another contact.</summary>
+        private void Ease(int c, int ease)
+        {
+            int cap = _capacity, row = c * cap, n = _frames;
+            for (int f = 0; f < n; f++) _weight[row + f] = _segment[row + f] != 0 ? 1 : 0;
+            for (int s = 0; s < n;)
+            {
+                int id = _segment[row + s];
+                if (id == 0)
+                {
+                    s++;
+                    continue;
+                }
+
+                int e = s;
+                while (e + 1 < n && _segment[row + e + 1] == id) e++;
+                for (int d = 1; d <= ease; d++)
+                {
+                    int f = s - d;
+                    if (f < 0 || _isKey[f] || _segment[row + f] != 0) break;
+                    Blend(row, f, s, d, ease);
+                }
+
+                for (int d = 1; d <= ease; d++)
+                {
+                    int f = e + d;
+                    if (f >= n || _isKey[f] || _segment[row + f] != 0) break;
+                    Blend(row, f, e, d, ease);
+                }
+
+                s = e + 1;
+            }
+        }
+
+        /// <summary>Frame f, d frames outside the contact frame <paramref name="edge"/>, eases towards that frame's target (the nearer contact wins).</summary>
+        private void Blend(int row, int f, int edge, int d, int ease)
+        {
+            double x = 1 - d / (double)(ease + 1);
+            double w = x * x * (3 - 2 * x);
+            if (w <= _weight[row + f]) return;
+            _weight[row + f] = w;
+            Copy(_anchor, (row + edge) * 3, _anchor, (row + f) * 3);
+        }
+
+        /// <summary>
+        /// The most a foot joint's planted height may be (leg lengths): its height above the rig's lowest foot joint
+        /// when it stands flat-footed, plus 1 % (a toe on the ground, an ankle a few centimetres up), so that a joint the
+        /// keys never show on the ground is not planted in the air.
+        /// </summary>
+        private static void StandingHeights(FootRig rig, double[] heights)
+        {
+            // Flat-footed: the ankle above the toe by at most the foot's drop in the model T-pose (30° below forward).
+            for (int side = 0; side < 2; side++)
+            {
+                Leg leg = rig[side];
+                double foot = leg.HasToe ? Vector3D.Read(rig.Skeleton.OffsetSpan, 3 * leg.Toe).Length : 0;
+                heights[2 * side] = (0.5 * foot) / rig.LegLength + 0.01;
+                heights[2 * side + 1] = 0.01;
+            }
+        }
+
+        private static void Copy(double[] from, int i, double[] to, int j)
+        {
+            to[j] = from[i];
+            to[j + 1] = from[i + 1];
+            to[j + 2] = from[i + 2];
+        }
+
+        private static Vector3D Lerp(Vector3D a, Vector3D b, double t) => a + t * (b - a);
+    }
+}

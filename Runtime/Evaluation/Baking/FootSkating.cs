@@ -1,0 +1,172 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Feet;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Evaluation.Baking
+{
+    /// <summary>
+    /// How much a baked clip's feet slide where the ground truth's feet are planted: the mean horizontal
+    /// speed, in leg lengths per second, of each foot joint (ankle, toe) of the result on the filled
+    /// (non-key) frames where that joint of the truth is in contact.
+    /// </summary>
+    /// <remarks>
+    /// <para>Contact is decided on the truth alone, so every method is scored on the same frames: a foot
+    /// joint is planted on a frame when it is within <see cref="ContactHeight"/> (3 %) of a leg length above
+    /// the clip's ground level and its horizontal speed is below <see cref="ContactSpeed"/> (15 % of a leg
+    /// length per second). The ground level is the 5th percentile, over the scored span's frames (first to
+    /// last key), of the truth's lowest foot-joint height. Speeds are central differences over the frames
+    /// around (a filled frame always has both), horizontal (X, Z) only: a foot may roll and lift, it should
+    /// not slide.</para>
+    /// <para>The truth measured against itself (<see cref="OfTruth"/>) is the floor no method can beat:
+    /// motion capture's planted feet creep a little, and the speed threshold lets them.</para>
+    /// <para>Leg length is <see cref="FootRig.LegLength"/> (<see cref="Core.Retargeting.SkeletonMap"/>'s), so the
+    /// number is comparable across skeletons and units; positions come from FK with each clip's own local
+    /// translations.</para>
+    /// </remarks>
+    public readonly struct FootSkating
+    {
+        /// <summary>Height above the ground level, in leg lengths, under which a truth foot joint may be in contact.</summary>
+        public const double ContactHeight = 0.03;
+
+        /// <summary>Horizontal speed, in leg lengths per second, under which a truth foot joint may be in contact.</summary>
+        public const double ContactSpeed = 0.15;
+
+        /// <summary>The percentile of the lowest foot-joint height that is the clip's ground level.</summary>
+        public const double GroundPercentile = 5;
+
+        private FootSkating(int samples, double meanSpeed, double ground)
+        {
+            ContactSamples = samples;
+            MeanSpeed = meanSpeed;
+            Ground = ground;
+        }
+
+        /// <summary>(Filled frame, foot joint) pairs where the truth is planted: the samples averaged.</summary>
+        public int ContactSamples { get; }
+
+        /// <summary>Mean horizontal speed of the result's planted foot joints, leg lengths per second (lower is better); NaN without samples.</summary>
+        public double MeanSpeed { get; }
+
+        /// <summary>The ground level used (height in the clip's units).</summary>
+        public double Ground { get; }
+
+        /// <summary>
+        /// Scores <paramref name="result"/> (a bake of <paramref name="truth"/>'s keys) on the frames where the truth's feet are planted.
+        /// </summary>
+        /// <param name="truth">The source clip (all frames).</param>
+        /// <param name="result">The baked clip: the truth's frames keys[0]..keys[last], same skeleton.</param>
+        /// <param name="keys">The key frame indices of <paramref name="truth"/>, increasing; frames between them are scored.</param>
+        /// <param name="feet">The skeleton's feet and leg length.</param>
+        public static FootSkating Measure(MotionClip truth, MotionClip result, IReadOnlyList<int> keys, FootRig feet)
+        {
+            if (truth == null) throw new ArgumentNullException(nameof(truth));
+            if (result == null) throw new ArgumentNullException(nameof(result));
+            if (feet == null) throw new ArgumentNullException(nameof(feet));
+            if (keys == null || keys.Count < 2) throw new ArgumentException("expected at least two keys", nameof(keys));
+            int first = keys[0], last = keys[keys.Count - 1];
+            int j = truth.Skeleton.JointCount;
+            if (result.Skeleton.JointCount != j || feet.Skeleton.JointCount != j || result.FrameCount != last - first + 1 || last >= truth.FrameCount || first < 0)
+            {
+                throw new ArgumentException("the clips, keys and feet do not match; expected the source clip, the clip baked from it with these keys, and the rig of their skeleton");
+            }
+
+            for (int i = 1; i < keys.Count; i++)
+            {
+                if (keys[i] <= keys[i - 1]) throw new ArgumentException($"key {keys[i]} after {keys[i - 1]}; expected increasing keys", nameof(keys));
+            }
+
+            int frames = last - first + 1;
+            IReadOnlyList<int> footJoints = feet.FootJoints;
+            int n = footJoints.Count;
+            double[] truthFeet = FootPositions(truth, first, frames, footJoints);
+            double[] resultFeet = ReferenceEquals(truth, result) ? truthFeet : FootPositions(result, 0, frames, footJoints);
+
+            var lowest = new double[frames];
+            for (int f = 0; f < frames; f++)
+            {
+                double low = double.PositiveInfinity;
+                for (int k = 0; k < n; k++) low = Math.Min(low, truthFeet[(f * n + k) * 3 + 1]);
+                lowest[f] = low;
+            }
+
+            double ground = Percentile(lowest, GroundPercentile);
+            double leg = feet.LegLength;
+            double heightLimit = ground + ContactHeight * leg;
+            double speedLimit = ContactSpeed * leg;
+            double dt2 = 2 * truth.FrameTime;
+            double sum = 0;
+            int samples = 0;
+            for (int i = 0; i + 1 < keys.Count; i++)
+            {
+                for (int frame = keys[i] + 1; frame < keys[i + 1]; frame++)
+                {
+                    int f = frame - first;
+                    for (int k = 0; k < n; k++)
+                    {
+                        if (truthFeet[(f * n + k) * 3 + 1] > heightLimit) continue;
+                        if (HorizontalSpeed(truthFeet, f, k, n, dt2) >= speedLimit) continue;
+                        sum += HorizontalSpeed(resultFeet, f, k, n, 2 * result.FrameTime);
+                        samples++;
+                    }
+                }
+            }
+
+            return new FootSkating(samples, samples == 0 ? double.NaN : sum / samples / leg, ground);
+        }
+
+        /// <summary>The truth scored against itself over the same frames: the floor no method can beat.</summary>
+        public static FootSkating OfTruth(MotionClip truth, IReadOnlyList<int> keys, FootRig feet)
+        {
+            if (truth == null) throw new ArgumentNullException(nameof(truth));
+            if (keys == null || keys.Count < 2) throw new ArgumentException("expected at least two keys", nameof(keys));
+            int first = keys[0], count = keys[keys.Count - 1] - first + 1;
+            if (first == 0 && count == truth.FrameCount) return Measure(truth, truth, keys, feet);
+            if (first < 0 || keys[keys.Count - 1] >= truth.FrameCount) throw new ArgumentException("the keys are not frames of the truth", nameof(keys));
+            int j = truth.Skeleton.JointCount;
+            var positions = new double[count * j * 3];
+            var rotations = new double[count * j * 4];
+            Array.Copy(truth.LocalPositions, first * j * 3, positions, 0, positions.Length);
+            Array.Copy(truth.LocalRotations, first * j * 4, rotations, 0, rotations.Length);
+            return Measure(truth, new MotionClip(truth.Skeleton, count, truth.FrameTime, positions, rotations), keys, feet);
+        }
+
+        /// <summary>frames × foot joints × 3 global positions of <paramref name="clip"/>'s frames start.. (FK with its local translations).</summary>
+        private static double[] FootPositions(MotionClip clip, int start, int frames, IReadOnlyList<int> footJoints)
+        {
+            int j = clip.Skeleton.JointCount, n = footJoints.Count;
+            var globalPositions = new double[j * 3];
+            var globalRotations = new double[j * 4];
+            var result = new double[frames * n * 3];
+            for (int f = 0; f < frames; f++)
+            {
+                ForwardKinematics.ComputeWithLocalPositions(clip.Skeleton, 1,
+                    clip.LocalPositions.AsSpan((start + f) * j * 3, j * 3), clip.LocalRotations.AsSpan((start + f) * j * 4, j * 4),
+                    globalPositions, globalRotations);
+                for (int k = 0; k < n; k++) Array.Copy(globalPositions, footJoints[k] * 3, result, (f * n + k) * 3, 3);
+            }
+
+            return result;
+        }
+
+        /// <summary>|(p[f+1] − p[f−1]) in X, Z| / 2Δt for foot joint k (f has a frame on either side).</summary>
+        private static double HorizontalSpeed(double[] feet, int f, int k, int n, double twoFrameTimes)
+        {
+            int next = ((f + 1) * n + k) * 3, previous = ((f - 1) * n + k) * 3;
+            double dx = feet[next] - feet[previous], dz = feet[next + 2] - feet[previous + 2];
+            return Math.Sqrt(dx * dx + dz * dz) / twoFrameTimes;
+        }
+
+        /// <summary>The p-th percentile with linear interpolation between order statistics (NumPy's default).</summary>
+        internal static double Percentile(double[] values, double p)
+        {
+            var sorted = (double[])values.Clone();
+            Array.Sort(sorted);
+            double rank = p / 100.0 * (sorted.Length - 1);
+            int lo = (int)Math.Floor(rank);
+            int hi = Math.Min(lo + 1, sorted.Length - 1);
+            return sorted[lo] + (rank - lo) * (sorted[hi] - sorted[lo]);
+        }
+    }
+}
