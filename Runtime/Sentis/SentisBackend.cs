@@ -3,6 +3,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
 using Unity.InferenceEngine;
+using Unity.Profiling;
 
 namespace DeltaInterpolator.Sentis
 {
@@ -200,7 +201,15 @@ namespace DeltaInterpolator.Sentis
 
             public void AddOutput(InferenceTensor t) => _outputs.Add(t);
 
+            // Shown in the Profiler's CPU timeline on whichever thread decodes (main or worker).
+            private static readonly ProfilerMarker s_Run = new ProfilerMarker("DeltaInterpolator.Sentis.Run");
+
             public void Run()
+            {
+                using (s_Run.Auto()) RunGraph();
+            }
+
+            private void RunGraph()
             {
                 if (_disposed) throw new ObjectDisposedException(nameof(IInferenceBinding));
                 Worker worker = _owner._worker;

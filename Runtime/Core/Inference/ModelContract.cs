@@ -295,7 +295,7 @@ namespace DeltaInterpolator.Core.Inference
         /// differs): an engine asset stores the whole graph's contract once, and each graph's backend
         /// describes itself with it.
         /// </summary>
-        internal ModelContract ForGraph(ModelGraphKind graph)
+        public ModelContract ForGraph(ModelGraphKind graph)
         {
             var copy = (ModelContract)MemberwiseClone();
             copy.Graph = graph;
@@ -362,7 +362,8 @@ namespace DeltaInterpolator.Core.Inference
             }
         }
 
-        internal static string GraphName(ModelGraphKind kind) => kind.ToString().ToLowerInvariant();
+        /// <summary>The graph's name as the contract and messages write it ("whole", "keys", "frame").</summary>
+        public static string GraphName(ModelGraphKind kind) => kind.ToString().ToLowerInvariant();
 
         /// <returns>False when no usable contract can be built (no readable skeleton).</returns>
         private bool ReadDescription(IReadOnlyDictionary<string, JsonValue> m, ModelCheckReport report)

@@ -145,6 +145,20 @@ namespace DeltaInterpolator.Core.Playback
         public int DecodedFrames => _job?.Decoded ?? 0;
 
         /// <summary>
+        /// The model checks of a request lasting <paramref name="durationSeconds"/> from now: P past frames and
+        /// the gap it becomes at the model's frame rate, outside the ranges the model was trained on, are
+        /// warnings (it runs, but was never taught such requests); see <see cref="ModelChecks.Request"/>.
+        /// </summary>
+        public ModelCheckReport CheckRequest(double durationSeconds)
+        {
+            var report = new ModelCheckReport();
+            ModelChecks.Request(_decoder.Contract, PastFrames, MissingFramesFor(durationSeconds), report);
+            return report;
+        }
+
+        private int MissingFramesFor(double durationSeconds) => Math.Max(2, (int)Math.Round(durationSeconds * FrameRate)) - 1;
+
+        /// <summary>
         /// Asks for a transition from the pose shown now to <paramref name="targetRotations"/> in
         /// <paramref name="durationSeconds"/>. The network's inputs are built here (history resampled at the
         /// model's rate, converted to the model's space); the network runs on the decoder.
@@ -160,8 +174,8 @@ namespace DeltaInterpolator.Core.Playback
             if (!(durationSeconds > 0) || double.IsInfinity(durationSeconds)) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, "expected a positive number of seconds");
             if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
             if (History.Count == 0) throw new InvalidOperationException("no frame has been recorded yet: play at least one frame before requesting a transition");
-            int gap = Math.Max(2, (int)Math.Round(durationSeconds * FrameRate));
-            int missing = gap - 1;
+            int missing = MissingFramesFor(durationSeconds);
+            int gap = missing + 1;
             ModelContract c = _decoder.Contract;
             if (PastFrames + missing > c.MaxFrameIndex)
             {

@@ -3,7 +3,7 @@ using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Tests.IO;
 using NUnit.Framework;
 
-namespace DeltaInterpolator.Tests.Evaluation.Benchmark
+namespace DeltaInterpolator.Tests.Benchmark
 {
     // Beside the Evaluation tests, not in Tests/Runtime/IO/InputFileTests: the runtime test assembly does not
     // reference DeltaInterpolator.Evaluation (an Editor-only assembly), so Unity could not compile it there.
