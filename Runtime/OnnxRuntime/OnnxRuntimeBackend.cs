@@ -211,10 +211,11 @@ namespace DeltaInterpolator.OnnxRuntime
             public OrtValue Wrap(InferenceTensor t)
             {
                 // Pins the managed array for the binding's lifetime: ONNX Runtime reads inputs from and
-                // writes outputs into Core's own arrays.
+                // writes outputs into Core's own arrays (a batch of fewer rows binds the first Length
+                // elements of the capacity array: no copy).
                 OrtValue v = t.Kind == TensorElementKind.Float32
-                    ? OrtValue.CreateTensorValueFromMemory(t.Floats!, t.Shape)
-                    : OrtValue.CreateTensorValueFromMemory(t.Longs!, t.Shape);
+                    ? OrtValue.CreateTensorValueFromMemory(OrtMemoryInfo.DefaultInstance, new Memory<float>(t.Floats!, 0, t.Length), t.Shape)
+                    : OrtValue.CreateTensorValueFromMemory(OrtMemoryInfo.DefaultInstance, new Memory<long>(t.Longs!, 0, t.Length), t.Shape);
                 _values.Add(v);
                 return v;
             }

@@ -22,7 +22,11 @@ namespace DeltaInterpolator.Sentis
     /// types before a run, so outputs are described with the kinds the contract names and checked against
     /// the real tensors on every run (a mismatch throws).</para>
     /// <para>On <see cref="BackendType.CPU"/> (the default) outputs are read in place, without allocation
-    /// in this class; GPU backends read outputs back with a blocking download each run. Not thread-safe:
+    /// in this class. Bindings are <see cref="IAsyncInferenceBinding"/>s: Core's frame scheduler
+    /// (<c>MainThreadDecoder</c>) schedules a run in one frame (<c>Worker.Schedule</c>, then
+    /// <c>Tensor.ReadbackRequest</c> on each output) and collects it in a later frame once
+    /// <c>IsReadbackRequestDone</c>, so the main thread never waits for the Burst jobs or the GPU;
+    /// <see cref="IInferenceBinding.Run"/> still runs and reads back at once. Not thread-safe:
     /// use a backend from the thread that created it (Unity's main thread for GPU backends).</para>
     /// </remarks>
     public sealed class SentisBackend : IInferenceBackend
@@ -174,10 +178,12 @@ namespace DeltaInterpolator.Sentis
             return new TensorShape(dims);
         }
 
-        private sealed class Binding : IInferenceBinding
+        private sealed class Binding : IAsyncInferenceBinding
         {
             private readonly SentisBackend _owner;
-            private readonly List<(InferenceTensor Core, Tensor<float>? Floats, Tensor<int>? Ints, int[]? Scratch)> _inputs = new List<(InferenceTensor, Tensor<float>?, Tensor<int>?, int[]?)>();
+            private readonly List<(InferenceTensor Core, Tensor<float>? Floats, Tensor<int>? Ints, int[]? Scratch, float[]? Staging)> _inputs = new List<(InferenceTensor, Tensor<float>?, Tensor<int>?, int[]?, float[]?)>();
+            private readonly List<Tensor> _pending = new List<Tensor>();
+            private bool _scheduled;
             private readonly List<InferenceTensor> _outputs = new List<InferenceTensor>();
             private bool _disposed;
 
@@ -191,25 +197,65 @@ namespace DeltaInterpolator.Sentis
                 TensorShape shape = Shape(t);
                 if (t.Kind == TensorElementKind.Float32)
                 {
-                    _inputs.Add((t, new Tensor<float>(shape, false), null, null));
+                    // A batch of fewer rows than Core's capacity array is uploaded from an exact-size copy.
+                    _inputs.Add((t, new Tensor<float>(shape, false), null, null, t.IsView ? new float[t.Length] : null));
                 }
                 else
                 {
-                    _inputs.Add((t, null, new Tensor<int>(shape, false), new int[t.Length]));
+                    _inputs.Add((t, null, new Tensor<int>(shape, false), new int[t.Length], null));
                 }
             }
 
             public void AddOutput(InferenceTensor t) => _outputs.Add(t);
 
-            // Shown in the Profiler's CPU timeline on whichever thread decodes (main or worker).
+            // Shown in the Profiler's CPU timeline on whichever thread decodes (main or worker): a blocking run,
+            // and the scheduling of an asynchronous one (its readback completes in TryComplete).
             private static readonly ProfilerMarker s_Run = new ProfilerMarker("DeltaInterpolator.Sentis.Run");
+            private static readonly ProfilerMarker s_Schedule = new ProfilerMarker("DeltaInterpolator.Sentis.Schedule");
 
             public void Run()
             {
-                using (s_Run.Auto()) RunGraph();
+                using (s_Run.Auto())
+                {
+                    Start();
+                    Worker worker = _owner._worker;
+                    foreach (InferenceTensor t in _outputs)
+                    {
+                        Read(worker.PeekOutput(t.Name), t);
+                    }
+                }
             }
 
-            private void RunGraph()
+            public void Schedule()
+            {
+                using var scope = s_Schedule.Auto();
+                Start();
+                _pending.Clear();
+                Worker worker = _owner._worker;
+                foreach (InferenceTensor t in _outputs)
+                {
+                    Tensor output = worker.PeekOutput(t.Name);
+                    output.ReadbackRequest();
+                    _pending.Add(output);
+                }
+
+                _scheduled = true;
+            }
+
+            public bool TryComplete()
+            {
+                if (!_scheduled) throw new InvalidOperationException("TryComplete without Schedule");
+                foreach (Tensor output in _pending)
+                {
+                    if (!output.IsReadbackRequestDone()) return false;
+                }
+
+                _scheduled = false;
+                for (int i = 0; i < _outputs.Count; i++) Read(_pending[i], _outputs[i]);
+                return true;
+            }
+
+            private void Start()
             {
                 if (_disposed) throw new ObjectDisposedException(nameof(IInferenceBinding));
                 Worker worker = _owner._worker;
@@ -217,24 +263,27 @@ namespace DeltaInterpolator.Sentis
                 {
                     if (input.Floats != null)
                     {
-                        input.Floats.Upload(input.Core.Floats!);
+                        float[] source = input.Core.Floats!;
+                        if (input.Staging != null)
+                        {
+                            Array.Copy(source, input.Staging, input.Staging.Length);
+                            source = input.Staging;
+                        }
+
+                        input.Floats.Upload(source);
                         worker.SetInput(input.Core.Name, input.Floats);
                     }
                     else
                     {
                         long[] longs = input.Core.Longs!;
                         int[] ints = input.Scratch!;
-                        for (int i = 0; i < longs.Length; i++) ints[i] = checked((int)longs[i]);
+                        for (int i = 0; i < ints.Length; i++) ints[i] = checked((int)longs[i]);
                         input.Ints!.Upload(ints);
                         worker.SetInput(input.Core.Name, input.Ints);
                     }
                 }
 
                 worker.Schedule();
-                foreach (InferenceTensor t in _outputs)
-                {
-                    Read(worker.PeekOutput(t.Name), t);
-                }
             }
 
             private void Read(Tensor output, InferenceTensor target)
@@ -257,11 +306,11 @@ namespace DeltaInterpolator.Sentis
                     if (cpu)
                     {
                         floats.CompleteAllPendingOperations();
-                        floats.AsReadOnlySpan().CopyTo(dst);
+                        floats.AsReadOnlySpan().CopyTo(new Span<float>(dst, 0, target.Length));
                     }
                     else
                     {
-                        Array.Copy(floats.DownloadToArray(), dst, dst.Length);
+                        Array.Copy(floats.DownloadToArray(), dst, target.Length);
                     }
                 }
                 else
@@ -276,12 +325,12 @@ namespace DeltaInterpolator.Sentis
                     {
                         ints.CompleteAllPendingOperations();
                         ReadOnlySpan<int> src = ints.AsReadOnlySpan();
-                        for (int i = 0; i < dst.Length; i++) dst[i] = src[i];
+                        for (int i = 0; i < target.Length; i++) dst[i] = src[i];
                     }
                     else
                     {
                         int[] src = ints.DownloadToArray();
-                        for (int i = 0; i < dst.Length; i++) dst[i] = src[i];
+                        for (int i = 0; i < target.Length; i++) dst[i] = src[i];
                     }
                 }
             }

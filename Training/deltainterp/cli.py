@@ -206,13 +206,17 @@ def _evaluate_export_fixtures(sub) -> None:
         "export", help="export a checkpoint to ONNX: whole graph + lazy keys/frame graphs",
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Writes OUT (the whole transition) and, beside it, .keys.onnx and .frame.onnx graphs "
-                    "(lazy decoding;\nout/m.onnx → out/m.keys.onnx, out/m.frame.onnx), opset 15, batch 1, dynamic frame axes, with the contract's constant outputs and "
+                    "(lazy decoding;\nout/m.onnx → out/m.keys.onnx, out/m.frame.onnx), opset 15, a batch axis, dynamic frame axes, with the contract's constant outputs and "
                     "metadata\n(Documentation~/model-contract.md). Fails when a graph holds an operator that "
                     "Sentis 2.x or\nBarracuda cannot import (deltainterp/operators.py), or when the numpy "
                     "evaluation of a written\ngraph differs from torch by more than 1e-5.\n"
                     "Example:\n  PYTHONPATH=Training python3 -m deltainterp export "
-                    "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx")
-    p.add_argument("--checkpoint", required=True, help="checkpoint.pt from `train`")
+                    "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx\n"
+                    "Re-export a shipped model in the current contract (weights read back from its whole graph):\n"
+                    "  PYTHONPATH=Training python3 -m deltainterp export --checkpoint "
+                    "Runtime/Models/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
+    p.add_argument("--checkpoint", required=True,
+                   help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")
     p.add_argument("--out", required=True, help="output path ending in .onnx")
     p.add_argument("--name", default="DeltaInterpolator-LaFAN1", help="model name in the metadata")
     p.add_argument("--force", action="store_true", help="replace existing OUT, .keys.onnx and .frame.onnx files")
@@ -280,7 +284,11 @@ def _run_evaluate_export_fixtures(args) -> int:
         torch.set_num_threads(1)
         for path in graph_paths(args.out).values():
             safe_output.check(path, args.force, [args.checkpoint])
-        loaded = load_checkpoint(args.checkpoint)
+        if args.checkpoint.endswith(".onnx"):
+            from .warm_start import load_exported_model
+            loaded = load_exported_model(args.checkpoint)
+        else:
+            loaded = load_checkpoint(args.checkpoint)
         report = export_model(loaded, args.out, args.name)
         print(f"{args.name}: {report.parameters:,} parameters, opset 15, checked against torch "
               f"(max |diff| {report.max_difference:.2g})")

@@ -4,7 +4,7 @@
 """
 from __future__ import annotations
 
-CONTRACT_VERSION = 1
+CONTRACT_VERSION = 2  # 2: a batch axis on every graph input and output (1: batch 1)
 
 # Input and output tensor names of the exported graphs.
 KEY_FEATURES = "key_features"

@@ -1,8 +1,10 @@
 """ONNX export of a trained Δ-Interpolator (Documentation~/model-contract.md).
 
-Three graphs per model, all opset 15, legacy TorchScript exporter, batch 1, dynamic frame axes:
+Three graphs per model, all opset 15, legacy TorchScript exporter, a dynamic batch axis B on every input
+and output (contract version 2: one row per transition, so a runtime runs many characters at once) and
+dynamic frame axes:
 - `<name>.onnx`: the whole transition (key features + frame indices → deltas of the query frames);
-- `<name>.keys.onnx`: keys → `key_memory` [R, 2, K, D] (per block, the cross-attention keys/values);
+- `<name>.keys.onnx`: keys → `key_memory` [B, R, 2, K, D] (per block, the cross-attention keys/values);
 - `<name>.frame.onnx`: `key_memory` + query frames → deltas (lazy decoding, one frame at a time if wanted).
 Each also returns the constant outputs `contract_version`, `joint_count`, `key_feature_size`, and carries
 `metadata_props` (`contract_version`, `deltainterp` JSON). Export refuses graphs with operators outside
@@ -43,38 +45,55 @@ def _constants(model: DeltaInterpolator) -> Tuple[Tensor, Tensor, Tensor]:
 
 
 class WholeGraph(nn.Module):
-    def __init__(self, model: DeltaInterpolator) -> None:
+    """Contract version 2: every input has a batch axis B (one row per transition, rows may differ in
+    gap length and frame indices but share K and N). `batched=False` is the version 1 layout (indices
+    [K]/[N], gap [1], batch 1), kept to read the weights of files exported before version 2."""
+
+    def __init__(self, model: DeltaInterpolator, batched: bool = True) -> None:
         super().__init__()
         self.model = model
+        self.batched = batched
 
     def forward(self, key_features: Tensor, key_frame_indices: Tensor, query_frame_indices: Tensor,
                 gap_length: Tensor, query_features: Optional[Tensor] = None):
-        root, rotation = self.model(key_features, key_frame_indices, query_frame_indices, gap_length,
-                                    query_features)
+        gap = gap_length.unsqueeze(1) if self.batched else gap_length  # [B] → [B, 1]: broadcasts over tokens
+        root, rotation = self.model(key_features, key_frame_indices, query_frame_indices, gap, query_features)
         return (root, rotation) + _constants(self.model)
 
 
 class KeysGraph(nn.Module):
-    def __init__(self, model: DeltaInterpolator) -> None:
+    def __init__(self, model: DeltaInterpolator, batched: bool = True) -> None:
         super().__init__()
         self.model = model
+        self.batched = batched
 
     def forward(self, key_features: Tensor, key_frame_indices: Tensor, gap_length: Tensor):
-        _, memory = self.model.encode_keys(key_features, key_frame_indices, gap_length)
-        # batch 1: (1, K, D) keys and values → (2, K, D) per block → (R, 2, K, D)
-        key_memory = torch.stack([torch.cat((k, v), 0) for k, v in memory], 0)
+        if not self.batched:
+            _, memory = self.model.encode_keys(key_features, key_frame_indices, gap_length)
+            # batch 1: (1, K, D) keys and values → (2, K, D) per block → (R, 2, K, D)
+            return (torch.stack([torch.cat((k, v), 0) for k, v in memory], 0),) + _constants(self.model)
+        _, memory = self.model.encode_keys(key_features, key_frame_indices, gap_length.unsqueeze(1))
+        # (B, K, D) keys and values → (B, 2, K, D) per block → (B, R, 2, K, D): one row per transition,
+        # contiguous, so a runtime gathers and scatters whole rows
+        key_memory = torch.stack([torch.stack((k, v), 1) for k, v in memory], 1)
         return (key_memory,) + _constants(self.model)
 
 
 class FrameGraph(nn.Module):
-    def __init__(self, model: DeltaInterpolator) -> None:
+    def __init__(self, model: DeltaInterpolator, batched: bool = True) -> None:
         super().__init__()
         self.model = model
+        self.batched = batched
 
     def forward(self, key_memory: Tensor, query_frame_indices: Tensor, gap_length: Tensor,
                 query_features: Optional[Tensor] = None):
-        memory = [(key_memory[i, 0:1], key_memory[i, 1:2]) for i in range(len(self.model.blocks))]
-        tokens = self.model.decode_queries(memory, query_frame_indices, gap_length, query_features)
+        if self.batched:
+            memory = [(key_memory[:, i, 0], key_memory[:, i, 1]) for i in range(len(self.model.blocks))]
+            gap = gap_length.unsqueeze(1)
+        else:
+            memory = [(key_memory[i, 0:1], key_memory[i, 1:2]) for i in range(len(self.model.blocks))]
+            gap = gap_length
+        tokens = self.model.decode_queries(memory, query_frame_indices, gap, query_features)
         root, rotation = self.model.heads(tokens)
         return (root, rotation) + _constants(self.model)
 
@@ -92,47 +111,73 @@ class GraphSpec:
     dynamic_axes: Dict[str, Dict[int, str]]
 
 
-def example_inputs(model: DeltaInterpolator, kind: str, keys: int = 11, queries: int = 5, gap: int = 5,
-                   seed: int = 0) -> Dict[str, Tensor]:
-    """Inputs of the given graph kind for K keys and N queries (frame indices laid out as the contract's)."""
+def example_inputs(model: DeltaInterpolator, kind: str, keys: int = 11, queries: int = 5, gap=5,
+                   seed: int = 0, batched: bool = True) -> Dict[str, Tensor]:
+    """Inputs of the given graph kind for K keys and N queries (frame indices laid out as the contract's).
+    `gap` is one gap length or, batched, a list of them (one row each: B = len(gap)); each row's query
+    frames are its first N missing frames. `batched=False`: the version 1 layout (B = 1)."""
     g = torch.Generator().manual_seed(seed)
-    j, past = model.config.joints, keys - 1
-    feats = torch.randn(1, keys, C.FEATURES_PER_JOINT * j, generator=g) * 0.3
-    key_idx = torch.tensor(list(range(past)) + [past + gap], dtype=torch.int64)
-    query_idx = torch.arange(past, past + queries, dtype=torch.int64)
-    gap_t = torch.tensor([gap], dtype=torch.int64)
+    gaps = list(gap) if isinstance(gap, (list, tuple)) else [gap]
+    if not batched and len(gaps) != 1:
+        raise ValueError("the version 1 layout has batch 1")
+    b, j, past = len(gaps), model.config.joints, keys - 1
+    feats = torch.randn(b, keys, C.FEATURES_PER_JOINT * j, generator=g) * 0.3
+    key_idx = torch.tensor([list(range(past)) + [past + n] for n in gaps], dtype=torch.int64)
+    query_idx = torch.stack([torch.arange(past, past + queries, dtype=torch.int64)] * b)
+    gap_t = torch.tensor(gaps, dtype=torch.int64)
+    if not batched:
+        key_idx, query_idx = key_idx[0], query_idx[0]
     if kind == "keys":
         return {C.KEY_FEATURES: feats, C.KEY_FRAME_INDICES: key_idx, C.GAP_LENGTH: gap_t}
     inputs = {C.KEY_FEATURES: feats, C.KEY_FRAME_INDICES: key_idx, C.QUERY_FRAME_INDICES: query_idx,
               C.GAP_LENGTH: gap_t}
     if model.config.input_delta_mode == "none":
-        inputs[C.QUERY_FEATURES] = torch.randn(1, queries, C.FEATURES_PER_JOINT * j, generator=g) * 0.3
+        inputs[C.QUERY_FEATURES] = torch.randn(b, queries, C.FEATURES_PER_JOINT * j, generator=g) * 0.3
     if kind == "frame":
         with torch.no_grad():
-            inputs = {C.KEY_MEMORY: KeysGraph(model)(feats, key_idx, gap_t)[0],
+            inputs = {C.KEY_MEMORY: KeysGraph(model, batched)(feats, key_idx, gap_t)[0],
                       C.QUERY_FRAME_INDICES: query_idx, C.GAP_LENGTH: gap_t,
                       **({C.QUERY_FEATURES: inputs[C.QUERY_FEATURES]} if C.QUERY_FEATURES in inputs else {})}
     return inputs
 
 
-def graph_specs(model: DeltaInterpolator) -> List[GraphSpec]:
+def graph_specs(model: DeltaInterpolator, batched: bool = True) -> List[GraphSpec]:
+    """The three graphs; `batched=False` is the version 1 layout (only to read old files' weights)."""
     consts = list(C.CONSTANT_OUTPUTS)
     deltas = [C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA]
     qf = [C.QUERY_FEATURES] if model.config.input_delta_mode == "none" else []
-    qf_axes = {C.QUERY_FEATURES: {1: "N"}} if qf else {}
-    out_axes = {C.ROOT_POSITION_DELTA: {1: "N"}, C.ROTATION_6D_DELTA: {1: "N"}}
+    if not batched:
+        qf_axes = {C.QUERY_FEATURES: {1: "N"}} if qf else {}
+        out_axes = {C.ROOT_POSITION_DELTA: {1: "N"}, C.ROTATION_6D_DELTA: {1: "N"}}
+        return [
+            GraphSpec("whole", WholeGraph(model, False),
+                      [C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.QUERY_FRAME_INDICES, C.GAP_LENGTH] + qf,
+                      deltas + consts,
+                      {C.KEY_FEATURES: {1: "K"}, C.KEY_FRAME_INDICES: {0: "K"}, C.QUERY_FRAME_INDICES: {0: "N"},
+                       **qf_axes, **out_axes}),
+            GraphSpec("keys", KeysGraph(model, False), [C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.GAP_LENGTH],
+                      [C.KEY_MEMORY] + consts,
+                      {C.KEY_FEATURES: {1: "K"}, C.KEY_FRAME_INDICES: {0: "K"}, C.KEY_MEMORY: {2: "K"}}),
+            GraphSpec("frame", FrameGraph(model, False), [C.KEY_MEMORY, C.QUERY_FRAME_INDICES, C.GAP_LENGTH] + qf,
+                      deltas + consts,
+                      {C.KEY_MEMORY: {2: "K"}, C.QUERY_FRAME_INDICES: {0: "N"}, **qf_axes, **out_axes}),
+        ]
+    qf_axes = {C.QUERY_FEATURES: {0: "B", 1: "N"}} if qf else {}
+    out_axes = {C.ROOT_POSITION_DELTA: {0: "B", 1: "N"}, C.ROTATION_6D_DELTA: {0: "B", 1: "N"}}
     return [
         GraphSpec("whole", WholeGraph(model),
                   [C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.QUERY_FRAME_INDICES, C.GAP_LENGTH] + qf,
                   deltas + consts,
-                  {C.KEY_FEATURES: {1: "K"}, C.KEY_FRAME_INDICES: {0: "K"}, C.QUERY_FRAME_INDICES: {0: "N"},
-                   **qf_axes, **out_axes}),
+                  {C.KEY_FEATURES: {0: "B", 1: "K"}, C.KEY_FRAME_INDICES: {0: "B", 1: "K"},
+                   C.QUERY_FRAME_INDICES: {0: "B", 1: "N"}, C.GAP_LENGTH: {0: "B"}, **qf_axes, **out_axes}),
         GraphSpec("keys", KeysGraph(model), [C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.GAP_LENGTH],
                   [C.KEY_MEMORY] + consts,
-                  {C.KEY_FEATURES: {1: "K"}, C.KEY_FRAME_INDICES: {0: "K"}, C.KEY_MEMORY: {2: "K"}}),
+                  {C.KEY_FEATURES: {0: "B", 1: "K"}, C.KEY_FRAME_INDICES: {0: "B", 1: "K"}, C.GAP_LENGTH: {0: "B"},
+                   C.KEY_MEMORY: {0: "B", 3: "K"}}),
         GraphSpec("frame", FrameGraph(model), [C.KEY_MEMORY, C.QUERY_FRAME_INDICES, C.GAP_LENGTH] + qf,
                   deltas + consts,
-                  {C.KEY_MEMORY: {2: "K"}, C.QUERY_FRAME_INDICES: {0: "N"}, **qf_axes, **out_axes}),
+                  {C.KEY_MEMORY: {0: "B", 3: "K"}, C.QUERY_FRAME_INDICES: {0: "B", 1: "N"}, C.GAP_LENGTH: {0: "B"},
+                   **qf_axes, **out_axes}),
     ]
 
 
@@ -188,8 +233,8 @@ def _declare_output_shapes(proto, loaded: LoadedModel, spec: GraphSpec) -> None:
     """The exporter names the output dims after internal nodes ('Reshaperotation_6d_delta_dim_2');
     state the contract's shapes instead, so that a runtime inspecting the model sees [1, N, J, 6]."""
     cfg = loaded.config
-    shapes = {C.ROOT_POSITION_DELTA: [1, "N", 3], C.ROTATION_6D_DELTA: [1, "N", cfg.joints, 6],
-              C.KEY_MEMORY: [cfg.blocks, 2, "K", cfg.width], **{c: [1] for c in C.CONSTANT_OUTPUTS}}
+    shapes = {C.ROOT_POSITION_DELTA: ["B", "N", 3], C.ROTATION_6D_DELTA: ["B", "N", cfg.joints, 6],
+              C.KEY_MEMORY: ["B", cfg.blocks, 2, "K", cfg.width], **{c: [1] for c in C.CONSTANT_OUTPUTS}}
     for out in proto.graph.output:
         dims = out.type.tensor_type.shape.dim
         want = shapes[out.name]
@@ -206,11 +251,11 @@ def export_graph(loaded: LoadedModel, spec: GraphSpec, name: str):
     """Trace one graph → onnx.ModelProto with metadata; raises OperatorError on forbidden operators."""
     import onnx
     model = loaded.model.eval()
-    inputs = example_inputs(model, spec.kind)
+    # traced with two rows of different gap lengths, so nothing about one row becomes a constant
+    inputs = example_inputs(model, spec.kind, gap=[5, 7])
     args = tuple(inputs[n] for n in spec.input_names)
     buffer = io.BytesIO()
     with torch.no_grad(), warnings.catch_warnings():
-        # int(x.shape[0]) in the model makes batch 1 a constant on purpose (batch 1 is the contract)
         warnings.simplefilter("ignore", torch.jit.TracerWarning)
         _torch_onnx_export(spec.module.eval(), args, buffer, spec)
     proto = onnx.load_from_string(buffer.getvalue())
@@ -236,9 +281,9 @@ def graph_paths(out: str | Path) -> Dict[str, Path]:
 
 
 def verify(loaded: LoadedModel, protos: Dict[str, object], tolerance: float = 1e-5,
-           shapes: Tuple[Tuple[int, int, int], ...] = ((11, 5, 5), (11, 30, 30), (6, 1, 17))) -> float:
+           shapes: Tuple = ((11, 5, 5), (11, 30, 30), (6, 1, 17), (11, 1, (5, 30, 12)), (3, 4, (9, 4)))) -> float:
     """Evaluate every graph with the numpy reference evaluator on several (K, N, n) and compare with
-    torch; also whole == keys + frame. Returns the largest difference; raises ExportCheckError above
+    torch; also whole == keys + frame. A tuple n is a batch of rows with those gap lengths. Returns the largest difference; raises ExportCheckError above
     `tolerance`."""
     from .onnx_reference import run_model
     model = loaded.model.eval()

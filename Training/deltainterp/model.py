@@ -106,7 +106,9 @@ class MultiHeadAttention(nn.Module):
         self.scale = 1.0 / math.sqrt(self.head_width)
 
     def split(self, x: Tensor) -> Tensor:  # (B, T, D) → (B, H, T, d)
-        return x.reshape(int(x.shape[0]), -1, self.heads, self.head_width).transpose(1, 2)
+        # x.shape[0], not int(...): an int in eager mode either way, but traced it stays a dynamic batch
+        # axis in the exported graph (contract version 2)
+        return x.reshape(x.shape[0], -1, self.heads, self.head_width).transpose(1, 2)
 
     def project_memory(self, keys: Tensor) -> Tuple[Tensor, Tensor]:
         return self.key(keys), self.value(keys)
@@ -118,7 +120,7 @@ class MultiHeadAttention(nn.Module):
         scores = torch.matmul(q, k.transpose(2, 3)) * self.scale
         attended = torch.matmul(torch.softmax(scores, dim=-1), v)
         width = self.heads * self.head_width
-        return self.output(attended.transpose(1, 2).reshape(int(x.shape[0]), -1, width))
+        return self.output(attended.transpose(1, 2).reshape(x.shape[0], -1, width))
 
 
 class Block(nn.Module):
@@ -175,10 +177,10 @@ class DeltaInterpolator(nn.Module):
 
     def decode_queries(self, memory: List[Tuple[Tensor, Tensor]], query_frame_indices: Tensor,
                        gap_length: Tensor, query_features: Optional[Tensor] = None) -> Tensor:
-        batch = int(memory[0][0].shape[0])
         m = (self.query_frame_projection(self.frame_embedding(query_frame_indices))
              + self.query_gap_projection(self.gap_embedding(gap_length)))
-        if m.dim() == 2:
+        if m.dim() == 2:  # frame indices shared by the batch (training, contract version 1 graphs)
+            batch = int(memory[0][0].shape[0])
             m = m.unsqueeze(0).expand(batch, -1, -1) if batch > 1 else m.unsqueeze(0)
         if self.query_input is not None:
             if query_features is None:
@@ -190,7 +192,7 @@ class DeltaInterpolator(nn.Module):
 
     def heads(self, tokens: Tensor) -> Tuple[Tensor, Tensor]:
         root = self.root_head(tokens)
-        rotation = self.rotation_head(tokens).reshape(int(tokens.shape[0]), -1, self.config.joints, 6)
+        rotation = self.rotation_head(tokens).reshape(tokens.shape[0], -1, self.config.joints, 6)
         return root, rotation
 
     def forward(self, key_features: Tensor, key_frame_indices: Tensor, query_frame_indices: Tensor,

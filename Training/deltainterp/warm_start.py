@@ -29,7 +29,7 @@ class WarmStartError(ValueError):
     """The ONNX file does not hold a network of the requested architecture."""
 
 
-def _probe_mapping(config: ModelConfig) -> Dict[Tuple[str, int], Tuple[str, bool]]:
+def _probe_mapping(config: ModelConfig, batched: bool = True) -> Dict[Tuple[str, int], Tuple[str, bool]]:
     """(node name, input position) → (parameter name, transposed) for the whole graph of this architecture.
 
     Keyed by where a tensor is USED rather than by initializer name: the exporter merges initializers
@@ -45,12 +45,13 @@ def _probe_mapping(config: ModelConfig) -> Dict[Tuple[str, int], Tuple[str, bool
         for i, (_, p) in enumerate(model.named_parameters()):
             rows = torch.arange(p.shape[0], dtype=p.dtype).reshape(-1, *([1] * (p.dim() - 1)))
             p.copy_((1000.0 * (i + 1) + rows).expand_as(p))
-    spec = next(s for s in graph_specs(model) if s.kind == "whole")
-    inputs = example_inputs(model, "whole")
+    # the same layout as the file's (contract version 1: batch 1; 2: a batch axis), as export traces it
+    spec = next(s for s in graph_specs(model, batched) if s.kind == "whole")
+    inputs = example_inputs(model, "whole", gap=[5, 7] if batched else 5, batched=batched)
     buffer = io.BytesIO()
     with torch.no_grad(), warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        _torch_onnx_export(WholeGraph(model).eval(), tuple(inputs[n] for n in spec.input_names), buffer, spec)
+        _torch_onnx_export(WholeGraph(model, batched).eval(), tuple(inputs[n] for n in spec.input_names), buffer, spec)
     proto = onnx.load_from_string(buffer.getvalue())
     shapes = dict((n, tuple(p.shape)) for n, p in model.named_parameters())
     by_initializer: Dict[str, Tuple[str, bool]] = {}
@@ -93,7 +94,8 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
 
     path = Path(path)
     proto = _load(path)
-    mapping = _probe_mapping(config)
+    batched = _is_batched(proto)
+    mapping = _probe_mapping(config, batched)
     model = DeltaInterpolator(config).eval()
     state = {k: v.clone() for k, v in model.state_dict().items()}
     found = set()
@@ -119,9 +121,9 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
                              f"expected a whole graph of width {config.width}, {config.blocks} blocks")
     model.load_state_dict(state)
     for keys, queries, gap in ((11, 5, 5), (2, 17, 17)):
-        feeds = example_inputs(model, "whole", keys, queries, gap, seed=keys + queries)
+        feeds = example_inputs(model, "whole", keys, queries, gap, seed=keys + queries, batched=batched)
         with torch.no_grad():
-            want = WholeGraph(model)(*feeds.values())
+            want = WholeGraph(model, batched)(*feeds.values())
         got = run_model(proto, {k: v.numpy() for k, v in feeds.items()})
         for i, out in enumerate((C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA)):
             diff = float(np.abs(got[out] - want[i].numpy()).max())
@@ -129,6 +131,14 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
                 raise WarmStartError(f"{path}: rebuilt network differs from the file by {diff:.3g} in {out}; "
                                      f"expected ≤ {tolerance} (another architecture?)")
     return state
+
+
+def _is_batched(proto) -> bool:
+    """True for a contract version ≥ 2 graph (a batch axis: `gap_length` is [B], key frame indices [B, K])."""
+    for value in proto.graph.input:
+        if value.name == C.KEY_FRAME_INDICES:
+            return len(value.type.tensor_type.shape.dim) == 2
+    return True
 
 
 def load_exported_model(path: str | Path):

@@ -51,13 +51,13 @@ def test_lazy_graphs_equal_whole_all_at_once_and_one_at_a_time(exported):
     whole = run_model(protos["whole"], inputs)
     keys = run_model(protos["keys"], {k: inputs[k] for k in (C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.GAP_LENGTH)})
     memory = keys[C.KEY_MEMORY]
-    assert memory.shape == (tiny.config.blocks, 2, 11, tiny.config.width)
+    assert memory.shape == (1, tiny.config.blocks, 2, 11, tiny.config.width)
     all_at_once = run_model(protos["frame"], {C.KEY_MEMORY: memory, C.QUERY_FRAME_INDICES: inputs[C.QUERY_FRAME_INDICES],
                                               C.GAP_LENGTH: inputs[C.GAP_LENGTH]})
     for name in (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA):
         assert np.abs(all_at_once[name] - whole[name]).max() < 1e-5
-    for i, frame in enumerate(inputs[C.QUERY_FRAME_INDICES]):
-        one = run_model(protos["frame"], {C.KEY_MEMORY: memory, C.QUERY_FRAME_INDICES: np.array([frame]),
+    for i, frame in enumerate(inputs[C.QUERY_FRAME_INDICES][0]):
+        one = run_model(protos["frame"], {C.KEY_MEMORY: memory, C.QUERY_FRAME_INDICES: frame.reshape(1, 1),
                                           C.GAP_LENGTH: inputs[C.GAP_LENGTH]})
         for name in (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA):
             assert np.abs(one[name][0, 0] - whole[name][0, i]).max() < 1e-5
@@ -84,9 +84,15 @@ def test_graph_interfaces_and_metadata(exported):
         assert meta["training"]["missing_frames"] == [5, 39]
         dims = {o.name: [d.dim_param or d.dim_value for d in o.type.tensor_type.shape.dim] for o in proto.graph.output}
         if kind != "keys":
-            assert dims[C.ROTATION_6D_DELTA] == [1, "N", 22, 6] and dims[C.ROOT_POSITION_DELTA] == [1, "N", 3]
+            assert dims[C.ROTATION_6D_DELTA] == ["B", "N", 22, 6] and dims[C.ROOT_POSITION_DELTA] == ["B", "N", 3]
         else:
-            assert dims[C.KEY_MEMORY] == [tiny.config.blocks, 2, "K", tiny.config.width]
+            assert dims[C.KEY_MEMORY] == ["B", tiny.config.blocks, 2, "K", tiny.config.width]
+        ins = {i.name: [d.dim_param or d.dim_value for d in i.type.tensor_type.shape.dim] for i in proto.graph.input}
+        assert ins[C.GAP_LENGTH] == ["B"]
+        if C.KEY_FRAME_INDICES in ins:
+            assert ins[C.KEY_FRAME_INDICES] == ["B", "K"]
+        if C.QUERY_FRAME_INDICES in ins:
+            assert ins[C.QUERY_FRAME_INDICES] == ["B", "N"]
         ops = check_operators(proto)
         assert not {"LayerNormalization", "Attention", "ScatterND", "If", "Loop"} & set(ops)
         assert set(ops) <= ALLOWED
@@ -218,4 +224,27 @@ def test_fixture_checkpoint_round_trip(tiny, tmp_path):
 def test_keys_graph_torch_module(tiny):
     inputs = example_inputs(tiny.model, "keys", 7, 1, 3)
     memory = KeysGraph(tiny.model)(*inputs.values())[0]
-    assert memory.shape == (tiny.config.blocks, 2, 7, tiny.config.width)
+    assert memory.shape == (1, tiny.config.blocks, 2, 7, tiny.config.width)
+
+
+def test_batch_rows_equal_their_own_runs(exported):
+    """Contract version 2: rows of one batched run (different gap lengths, different query frames) equal
+    each row run alone, in every graph (a runtime gathers many characters into one run)."""
+    tiny, _, protos = exported
+    gaps = [5, 30, 12, 1]
+    batch = {k: v.numpy() for k, v in example_inputs(tiny.model, "whole", 11, 1, gaps, seed=7).items()}
+    batch[C.QUERY_FRAME_INDICES] = np.array([[10], [10 + 29], [10 + 6], [10]], dtype=np.int64)
+    keys_in = (C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.GAP_LENGTH)
+    whole = run_model(protos["whole"], batch)
+    memory = run_model(protos["keys"], {k: batch[k] for k in keys_in})[C.KEY_MEMORY]
+    assert memory.shape == (4, tiny.config.blocks, 2, 11, tiny.config.width)
+    frame = run_model(protos["frame"], {C.KEY_MEMORY: memory, C.QUERY_FRAME_INDICES: batch[C.QUERY_FRAME_INDICES],
+                                        C.GAP_LENGTH: batch[C.GAP_LENGTH]})
+    for row in range(len(gaps)):
+        one = {k: v[row:row + 1] for k, v in batch.items()}
+        alone = run_model(protos["whole"], one)
+        alone_memory = run_model(protos["keys"], {k: one[k] for k in keys_in})[C.KEY_MEMORY]
+        assert np.abs(alone_memory[0] - memory[row]).max() < 1e-5
+        for name in (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA):
+            assert np.abs(alone[name][0] - whole[name][row]).max() < 1e-5
+            assert np.abs(alone[name][0] - frame[name][row]).max() < 1e-5

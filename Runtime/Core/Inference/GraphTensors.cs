@@ -30,9 +30,11 @@ namespace DeltaInterpolator.Core.Inference
         private readonly InferenceTensor[] _outputs;
 
         private GraphTensors(ModelGraphKind graph, int pastFrames, int missingFrames, int queryFrames, InferenceTensor? keyFeatures, InferenceTensor? keyFrameIndices,
-            InferenceTensor? queryFrameIndices, InferenceTensor gapLength, InferenceTensor? keyMemory, InferenceTensor? rootDelta, InferenceTensor? rotationDelta, bool constants)
+            InferenceTensor? queryFrameIndices, InferenceTensor gapLength, InferenceTensor? keyMemory, InferenceTensor? rootDelta, InferenceTensor? rotationDelta, bool constants,
+            int batch = 1, bool fill = true)
         {
             Graph = graph;
+            Batch = batch;
             PastFrames = pastFrames;
             MissingFrames = missingFrames;
             QueryFrameCount = queryFrames;
@@ -71,10 +73,18 @@ namespace DeltaInterpolator.Core.Inference
 
             _inputs = inputs.ToArray();
             _outputs = outputs.ToArray();
-            if (keyFrameIndices != null) WriteKeyFrames(pastFrames, missingFrames, keyFrameIndices.Longs);
-            gapLength.Longs![0] = missingFrames;
+            if (!fill) return;
+            for (int row = 0; row < batch; row++)
+            {
+                if (keyFrameIndices != null) SetKeyRow(row, missingFrames);
+                gapLength.Longs![row] = missingFrames;
+            }
+
             if (queryFrameIndices != null) SetQuery(0);
         }
+
+        /// <summary>Rows (transitions) per run: 1, or the capacity of a batch (contract version 2).</summary>
+        public int Batch { get; }
 
         /// <summary>Which graph these tensors are for.</summary>
         public ModelGraphKind Graph { get; }
@@ -88,25 +98,25 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>N, the number of missing frames one run decodes (n for a whole transition, 1 for lazy frames); 0 for the keys graph.</summary>
         public int QueryFrameCount { get; }
 
-        /// <summary>float32 [1, K, 9·J], K = P + 1: filled by <see cref="KeyFeatureBuilder"/>; null for the frame graph.</summary>
+        /// <summary>float32 [B, K, 9·J], K = P + 1 (B = 1 for version 1 graphs): filled by <see cref="KeyFeatureBuilder"/>; null for the frame graph.</summary>
         public InferenceTensor? KeyFeatures { get; }
 
-        /// <summary>int64 [K] = 0..P−1, P+n (filled at creation); null for the frame graph.</summary>
+        /// <summary>int64 [B, K] (version 1: [K]) = 0..P−1, P+n per row (filled at creation, <see cref="SetKeyRow"/>); null for the frame graph.</summary>
         public InferenceTensor? KeyFrameIndices { get; }
 
-        /// <summary>int64 [N], the missing frames wanted (<see cref="SetQuery"/>); null for the keys graph.</summary>
+        /// <summary>int64 [B, N] (version 1: [N]), the missing frames wanted (<see cref="SetQuery"/>, <see cref="SetQueryRow"/>); null for the keys graph.</summary>
         public InferenceTensor? QueryFrameIndices { get; }
 
-        /// <summary>int64 [1] = n (filled at creation).</summary>
+        /// <summary>int64 [B] (version 1: [1]) = n per row (filled at creation).</summary>
         public InferenceTensor GapLength { get; }
 
-        /// <summary>float32 [R, 2, K, D]: the keys graph's output and the frame graph's input (one array, no copy); null for the whole graph.</summary>
+        /// <summary>float32 [B, R, 2, K, D] (version 1: [R, 2, K, D]): the keys graph's output and the frame graph's input (one array, no copy); null for the whole graph.</summary>
         public InferenceTensor? KeyMemory { get; }
 
-        /// <summary>float32 [1, N, 3]; null for the keys graph.</summary>
+        /// <summary>float32 [B, N, 3]; null for the keys graph.</summary>
         public InferenceTensor? RootPositionDelta { get; }
 
-        /// <summary>float32 [1, N, J, 6]; null for the keys graph.</summary>
+        /// <summary>float32 [B, N, J, 6]; null for the keys graph.</summary>
         public InferenceTensor? Rotation6DDelta { get; }
 
         /// <summary>Constant output int64 [1], when created with constants.</summary>
@@ -134,24 +144,27 @@ namespace DeltaInterpolator.Core.Inference
         /// <param name="missingFrames">n ≥ 1.</param>
         /// <param name="queryFrames">N, frames per run of the whole graph (1..n).</param>
         /// <param name="constants">Also bind the constant outputs (the load-time probe).</param>
-        public static GraphTensors Create(ModelContract contract, ModelGraphKind graph, int pastFrames, int missingFrames, int queryFrames, bool constants = false)
+        /// <param name="batch">Rows (transitions) per run; above 1 only for graphs with a batch axis (contract version 2).</param>
+        public static GraphTensors Create(ModelContract contract, ModelGraphKind graph, int pastFrames, int missingFrames, int queryFrames, bool constants = false, int batch = 1)
         {
             if (contract == null) throw new ArgumentNullException(nameof(contract));
             if (pastFrames < 1 || missingFrames < 1) throw new ArgumentException($"P = {pastFrames}, n = {missingFrames}; expected at least one past key and one missing frame");
+            CheckBatch(contract, batch);
+            bool b = contract.HasBatchAxis;
             int keys = pastFrames + 1;
-            var features = InferenceTensor.Float(TensorNames.KeyFeatures, 1, keys, contract.KeyFeatureSize);
-            var keyFrames = InferenceTensor.Int64(TensorNames.KeyFrameIndices, keys);
-            var gap = InferenceTensor.Int64(TensorNames.GapLength, 1);
+            var features = InferenceTensor.Float(TensorNames.KeyFeatures, batch, keys, contract.KeyFeatureSize);
+            var keyFrames = b ? InferenceTensor.Int64(TensorNames.KeyFrameIndices, batch, keys) : InferenceTensor.Int64(TensorNames.KeyFrameIndices, keys);
+            var gap = InferenceTensor.Int64(TensorNames.GapLength, batch);
             switch (graph)
             {
                 case ModelGraphKind.Whole:
                     if (queryFrames < 1 || queryFrames > missingFrames) throw new ArgumentOutOfRangeException(nameof(queryFrames), $"N = {queryFrames}; expected 1..{missingFrames}");
-                    return new GraphTensors(graph, pastFrames, missingFrames, queryFrames, features, keyFrames, InferenceTensor.Int64(TensorNames.QueryFrameIndices, queryFrames), gap,
-                        null, RootDelta(queryFrames), RotationDelta(contract, queryFrames), constants);
+                    return new GraphTensors(graph, pastFrames, missingFrames, queryFrames, features, keyFrames, Query(contract, batch, queryFrames), gap,
+                        null, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), constants, batch);
                 case ModelGraphKind.Keys:
                     ModelArchitecture a = contract.Architecture;
-                    var memory = InferenceTensor.Float(TensorNames.KeyMemory, a.Blocks, 2, keys, a.Width);
-                    return new GraphTensors(graph, pastFrames, missingFrames, 0, features, keyFrames, null, gap, memory, null, null, constants);
+                    var memory = b ? InferenceTensor.Float(TensorNames.KeyMemory, batch, a.Blocks, 2, keys, a.Width) : InferenceTensor.Float(TensorNames.KeyMemory, a.Blocks, 2, keys, a.Width);
+                    return new GraphTensors(graph, pastFrames, missingFrames, 0, features, keyFrames, null, gap, memory, null, null, constants, batch);
                 default:
                     throw new ArgumentException("the frame graph's tensors share the keys graph's key_memory and gap_length: use GraphTensors.ForFrame(keys, …)", nameof(graph));
             }
@@ -167,8 +180,47 @@ namespace DeltaInterpolator.Core.Inference
             if (contract == null) throw new ArgumentNullException(nameof(contract));
             if (keys == null || keys.Graph != ModelGraphKind.Keys) throw new ArgumentException("expected the keys graph's tensors", nameof(keys));
             if (queryFrames < 1 || queryFrames > keys.MissingFrames) throw new ArgumentOutOfRangeException(nameof(queryFrames), $"N = {queryFrames}; expected 1..{keys.MissingFrames}");
-            return new GraphTensors(ModelGraphKind.Frame, keys.PastFrames, keys.MissingFrames, queryFrames, null, null, InferenceTensor.Int64(TensorNames.QueryFrameIndices, queryFrames),
-                keys.GapLength, keys.KeyMemory, RootDelta(queryFrames), RotationDelta(contract, queryFrames), constants);
+            int batch = keys.Batch;
+            return new GraphTensors(ModelGraphKind.Frame, keys.PastFrames, keys.MissingFrames, queryFrames, null, null, Query(contract, batch, queryFrames),
+                keys.GapLength, keys.KeyMemory, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), constants, batch);
+        }
+
+        /// <summary>
+        /// The same tensors for the first <paramref name="rows"/> rows only (views over the same arrays, no
+        /// copy): a batch of fewer transitions than the capacity. Version 2 graphs only.
+        /// </summary>
+        public GraphTensors Prefix(int rows)
+        {
+            if (rows < 1 || rows > Batch) throw new ArgumentOutOfRangeException(nameof(rows), rows, $"expected 1..{Batch} rows");
+            if (rows == Batch) return this;
+            if (ContractVersion != null) throw new InvalidOperationException("constant outputs are for the probe run only");
+            return new GraphTensors(Graph, PastFrames, MissingFrames, QueryFrameCount, KeyFeatures?.Prefix(rows), KeyFrameIndices?.Prefix(rows), QueryFrameIndices?.Prefix(rows),
+                GapLength.Prefix(rows), KeyMemory?.Prefix(rows), RootPositionDelta?.Prefix(rows), Rotation6DDelta?.Prefix(rows), false, rows, fill: false);
+        }
+
+        /// <summary>Writes row <paramref name="row"/>'s key frame indices 0..P−1, P+n and its gap length n (rows of one batch may differ in n).</summary>
+        public void SetKeyRow(int row, int missingFrames)
+        {
+            if ((uint)row >= (uint)Batch) throw new ArgumentOutOfRangeException(nameof(row));
+            int keys = PastFrames + 1;
+            long[]? k = KeyFrameIndices?.Longs;
+            if (k != null)
+            {
+                int o = row * keys;
+                for (int i = 0; i < PastFrames; i++) k[o + i] = i;
+                k[o + PastFrames] = PastFrames + missingFrames;
+            }
+
+            GapLength.Longs![row] = missingFrames;
+        }
+
+        /// <summary>Row <paramref name="row"/> asks for missing frames <paramref name="firstMissing"/>, +1, … of its own gap.</summary>
+        public void SetQueryRow(int row, int firstMissing)
+        {
+            long[] query = QueryFrameIndices?.Longs ?? throw new InvalidOperationException("the keys graph has no query frames");
+            if ((uint)row >= (uint)Batch) throw new ArgumentOutOfRangeException(nameof(row));
+            int o = row * QueryFrameCount;
+            for (int i = 0; i < QueryFrameCount; i++) query[o + i] = PastFrames + firstMissing + i;
         }
 
         /// <summary>Binds these tensors to <paramref name="backend"/> once (<see cref="IInferenceBackend.Bind"/>).</summary>
@@ -186,23 +238,32 @@ namespace DeltaInterpolator.Core.Inference
         public void SetQuery(int firstMissing)
         {
             long[] query = QueryFrameIndices?.Longs ?? throw new InvalidOperationException("the keys graph has no query frames");
-            if (firstMissing < 0 || firstMissing + query.Length > MissingFrames)
+            int n = QueryFrameCount;
+            if (firstMissing < 0 || firstMissing + n > MissingFrames)
             {
-                throw new ArgumentOutOfRangeException(nameof(firstMissing), $"missing frames {firstMissing}..{firstMissing + query.Length - 1}; expected 0..{MissingFrames - 1}");
+                throw new ArgumentOutOfRangeException(nameof(firstMissing), $"missing frames {firstMissing}..{firstMissing + n - 1}; expected 0..{MissingFrames - 1}");
             }
 
-            for (int i = 0; i < query.Length; i++) query[i] = PastFrames + firstMissing + i;
+            for (int row = 0; row < Batch; row++)
+            {
+                for (int i = 0; i < n; i++) query[row * n + i] = PastFrames + firstMissing + i;
+            }
         }
 
-        /// <summary>Writes 0..P−1 then P+n (relative to the first past key; ≤ <see cref="ModelContract.LargestFrameIndex"/>).</summary>
-        private static void WriteKeyFrames(int pastFrames, int missingFrames, long[]? keyFrameIndices)
+        private static void CheckBatch(ModelContract contract, int batch)
         {
-            for (int i = 0; i < pastFrames; i++) keyFrameIndices![i] = i;
-            keyFrameIndices![pastFrames] = pastFrames + missingFrames;
+            if (batch < 1) throw new ArgumentOutOfRangeException(nameof(batch), batch, "expected at least one row");
+            if (batch > 1 && !contract.HasBatchAxis)
+            {
+                throw new ArgumentException($"{contract.Source} has contract version {contract.ContractVersion}, without a batch axis; export it again (python3 -m deltainterp export) to run transitions in batches", nameof(batch));
+            }
         }
 
-        private static InferenceTensor RootDelta(int queryFrames) => InferenceTensor.Float(TensorNames.RootPositionDelta, 1, queryFrames, 3);
+        private static InferenceTensor Query(ModelContract contract, int batch, int queryFrames) =>
+            contract.HasBatchAxis ? InferenceTensor.Int64(TensorNames.QueryFrameIndices, batch, queryFrames) : InferenceTensor.Int64(TensorNames.QueryFrameIndices, queryFrames);
 
-        private static InferenceTensor RotationDelta(ModelContract contract, int queryFrames) => InferenceTensor.Float(TensorNames.Rotation6DDelta, 1, queryFrames, contract.JointCount, 6);
+        private static InferenceTensor RootDelta(int batch, int queryFrames) => InferenceTensor.Float(TensorNames.RootPositionDelta, batch, queryFrames, 3);
+
+        private static InferenceTensor RotationDelta(ModelContract contract, int batch, int queryFrames) => InferenceTensor.Float(TensorNames.Rotation6DDelta, batch, queryFrames, contract.JointCount, 6);
     }
 }

@@ -37,4 +37,23 @@ namespace DeltaInterpolator.Core.Inference
         /// <exception cref="InvalidOperationException">The engine failed; the message says why.</exception>
         void Run();
     }
+
+    /// <summary>
+    /// A binding whose run can be started in one frame and collected in a later one, so that the thread
+    /// that schedules it never waits for the engine (Sentis: <c>Worker.Schedule</c>, then asynchronous
+    /// readback of the outputs). Core's frame scheduler uses it when a backend offers it; otherwise it
+    /// calls <see cref="IInferenceBinding.Run"/>.
+    /// </summary>
+    public interface IAsyncInferenceBinding : IInferenceBinding
+    {
+        /// <summary>Reads the bound inputs now (they may change afterwards) and starts the run.</summary>
+        void Schedule();
+
+        /// <summary>
+        /// True when the run started by <see cref="Schedule"/> has finished and the bound outputs hold its
+        /// results; false while it is still running (call again in a later frame). Never blocks.
+        /// </summary>
+        /// <exception cref="InvalidOperationException">The engine failed; the message says why.</exception>
+        bool TryComplete();
+    }
 }

@@ -169,6 +169,12 @@ namespace DeltaInterpolator.Core.Inference
 
         internal KeyFeatureBuilder Features => _features;
 
+        /// <summary>The keys graph (lazy decoding), or null.</summary>
+        internal IInferenceBackend? KeysBackend => _keys;
+
+        /// <summary>The frame graph (lazy decoding), or null.</summary>
+        internal IInferenceBackend? FrameBackend => _frame;
+
         internal void CheckSkeleton(Skeleton skeleton)
         {
             if (ReferenceEquals(skeleton, _checkedSkeleton)) return;
@@ -192,12 +198,20 @@ namespace DeltaInterpolator.Core.Inference
         /// prepares each joint's slerp between the last past key and the target (<paramref name="pairs"/>,
         /// one per joint) once, for every missing frame's baseline.
         /// </summary>
-        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, InferenceTensor keyFeatures)
+        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, InferenceTensor keyFeatures) =>
+            LocalizeAndBuild(t, localRoot, localRotations, pairs, keyFeatures.Floats);
+
+        /// <summary>As above, writing the K × 9J features into <paramref name="keyFeatures"/> (a row of a batch, or a request's own buffer).</summary>
+        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, Span<float> keyFeatures) =>
+            LocalizeAndBuild(t, localRoot, localRotations, pairs, keyFeatures, _features);
+
+        /// <summary>As above with another thread's own feature builder (the builder holds scratch buffers).</summary>
+        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, Span<float> keyFeatures, KeyFeatureBuilder features)
         {
             int keys = t.KeyFrameCount;
             int reference = t.PastFrames - 1;
             Localization loc = Localizer.Localize(Contract, t.KeyRootPositions, t.KeyLocalRotations, keys, reference, localRoot, localRotations);
-            _features.Build(localRoot, localRotations, keys, reference, keyFeatures.Floats);
+            features.Build(localRoot, localRotations, keys, reference, keyFeatures);
             int jc = Contract.JointCount;
             int target = t.PastFrames;
             for (int j = 0; j < jc; j++)
@@ -214,7 +228,11 @@ namespace DeltaInterpolator.Core.Inference
         /// Decodes network output row <paramref name="row"/> into missing frame <paramref name="k"/> of the
         /// transition (world space). Shared by the whole and the lazy paths, so both are identical maths.
         /// </summary>
-        internal void Decode(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, float[] rootDelta, float[] rotationDelta, int row, int k)
+        internal void Decode(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, float[] rootDelta, float[] rotationDelta, int row, int k) =>
+            Decode(t, loc, localRoot, pairs, rootDelta, rotationDelta, row, k, t.RootPositions, t.LocalRotations);
+
+        /// <summary>As above, into <paramref name="roots"/> (n × 3) and <paramref name="rotations"/> (n × J × 4) instead of the transition's own buffers.</summary>
+        internal void Decode(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, float[] rootDelta, float[] rotationDelta, int row, int k, double[] roots, double[] rotations)
         {
             int jc = Contract.JointCount;
             int n = t.MissingFrames;
@@ -224,14 +242,35 @@ namespace DeltaInterpolator.Core.Inference
             double a = DeltaBaseline.Weight(k, n);
             Vector3D baseRoot = DeltaBaseline.RootPosition(mode, Vector3D.Read(localRoot, 3 * last), Vector3D.Read(localRoot, 3 * target), a);
             Vector3D root = OutputDecoder.RootPosition(baseRoot, new ReadOnlySpan<float>(rootDelta, 3 * row, 3));
-            loc.UnlocalizePosition(root).Write(t.RootPositions, 3 * k);
-            double[] output = t.LocalRotations;
+            loc.UnlocalizePosition(root).Write(roots, 3 * k);
+            double[] output = rotations;
             for (int j = 0; j < jc; j++)
             {
                 QuaternionD baseRotation = DeltaBaseline.Rotation(mode, pairs[j], a);
                 QuaternionD q = OutputDecoder.Rotation(mode, baseRotation, new ReadOnlySpan<float>(rotationDelta, (row * jc + j) * 6, 6));
                 if (j == 0) q = loc.UnlocalizeRootRotation(q);
                 q.Write(output, (k * jc + j) * 4);
+            }
+        }
+
+        /// <summary>
+        /// The SLERP pose of missing frame <paramref name="k"/> of the same request, world space: the
+        /// baseline the network's Δ is added to (output Δ-mode <c>slerp</c>; other modes get SLERP too), what
+        /// a frame shows while its network output has not arrived. Allocation-free.
+        /// </summary>
+        internal void Baseline(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, int k, double[] roots, double[] rotations)
+        {
+            int jc = Contract.JointCount;
+            int last = t.PastFrames - 1;
+            int target = t.PastFrames;
+            double a = DeltaBaseline.Weight(k, t.MissingFrames);
+            Vector3D root = DeltaBaseline.RootPosition(OutputDeltaMode.Slerp, Vector3D.Read(localRoot, 3 * last), Vector3D.Read(localRoot, 3 * target), a);
+            loc.UnlocalizePosition(root).Write(roots, 3 * k);
+            for (int j = 0; j < jc; j++)
+            {
+                QuaternionD q = DeltaBaseline.Rotation(OutputDeltaMode.Slerp, pairs[j], a);
+                if (j == 0) q = loc.UnlocalizeRootRotation(q);
+                q.Write(rotations, (k * jc + j) * 4);
             }
         }
 

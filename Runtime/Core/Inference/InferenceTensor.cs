@@ -17,6 +17,7 @@ namespace DeltaInterpolator.Core.Inference
             Shape = shape;
             Floats = floats;
             Longs = longs;
+            Length = Count(shape);
         }
 
         /// <summary>A float32 tensor of the given shape, zero-filled.</summary>
@@ -42,8 +43,26 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>Elements of an int64 tensor, row-major; null for other kinds.</summary>
         public long[]? Longs { get; }
 
-        /// <summary>Number of elements.</summary>
-        public int Length => Floats?.Length ?? Longs!.Length;
+        /// <summary>
+        /// Number of elements: the first <see cref="Length"/> elements of <see cref="Floats"/> or
+        /// <see cref="Longs"/> (a <see cref="Prefix"/> view shares a longer array).
+        /// </summary>
+        public int Length { get; }
+
+        /// <summary>True when the array is longer than the tensor (a <see cref="Prefix"/> view): backends bind only its first <see cref="Length"/> elements.</summary>
+        public bool IsView => (Floats?.Length ?? Longs!.Length) != Length;
+
+        /// <summary>
+        /// The first <paramref name="rows"/> rows (along axis 0) of this tensor, sharing its array: a batch
+        /// of fewer transitions than the capacity the array was made for, bound without a copy.
+        /// </summary>
+        public InferenceTensor Prefix(int rows)
+        {
+            if (Shape.Length == 0 || rows < 0 || rows > Shape[0]) throw new ArgumentOutOfRangeException(nameof(rows), rows, $"expected 0..{(Shape.Length == 0 ? 0 : Shape[0])} rows");
+            var shape = (long[])Shape.Clone();
+            shape[0] = rows;
+            return new InferenceTensor(Name, Kind, shape, Floats, Longs);
+        }
 
         private static int Count(long[] shape)
         {

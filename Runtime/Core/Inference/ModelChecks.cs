@@ -47,12 +47,16 @@ namespace DeltaInterpolator.Core.Inference
         public static void Graph(ModelContract contract, ModelDescription model, ModelCheckReport report)
         {
             int kf = contract.KeyFeatureSize;
+            // A version this runtime does not read is one error already (the tensors may be anything).
+            if (contract.ContractVersion < ModelContract.MinSupportedVersion || contract.ContractVersion > ModelContract.MaxSupportedVersion) return;
+            // Version 2 adds a batch axis: indices [B, K] / [B, N], gap [B], key_memory [B, R, 2, K, D].
+            int b = contract.HasBatchAxis ? 1 : 0;
             switch (contract.Graph)
             {
                 case ModelGraphKind.Whole:
                     Input(contract, model, report, TensorNames.KeyFeatures, TensorElementKind.Float32, 3, 2, kf);
-                    Input(contract, model, report, TensorNames.KeyFrameIndices, TensorElementKind.Int64, 1, -1, 0);
-                    Input(contract, model, report, TensorNames.QueryFrameIndices, TensorElementKind.Int64, 1, -1, 0);
+                    Input(contract, model, report, TensorNames.KeyFrameIndices, TensorElementKind.Int64, 1 + b, -1, 0);
+                    Input(contract, model, report, TensorNames.QueryFrameIndices, TensorElementKind.Int64, 1 + b, -1, 0);
                     Input(contract, model, report, TensorNames.GapLength, TensorElementKind.Int64, 1, -1, 0);
                     OnlyInputs(contract, model, report, TensorNames.KeyFeatures, TensorNames.KeyFrameIndices, TensorNames.QueryFrameIndices, TensorNames.GapLength);
                     Output(contract, model, report, TensorNames.RootPositionDelta, TensorElementKind.Float32);
@@ -60,14 +64,14 @@ namespace DeltaInterpolator.Core.Inference
                     break;
                 case ModelGraphKind.Keys:
                     Input(contract, model, report, TensorNames.KeyFeatures, TensorElementKind.Float32, 3, 2, kf);
-                    Input(contract, model, report, TensorNames.KeyFrameIndices, TensorElementKind.Int64, 1, -1, 0);
+                    Input(contract, model, report, TensorNames.KeyFrameIndices, TensorElementKind.Int64, 1 + b, -1, 0);
                     Input(contract, model, report, TensorNames.GapLength, TensorElementKind.Int64, 1, -1, 0);
                     OnlyInputs(contract, model, report, TensorNames.KeyFeatures, TensorNames.KeyFrameIndices, TensorNames.GapLength);
                     Output(contract, model, report, TensorNames.KeyMemory, TensorElementKind.Float32);
                     break;
                 default:
-                    Input(contract, model, report, TensorNames.KeyMemory, TensorElementKind.Float32, 4, -1, 0);
-                    Input(contract, model, report, TensorNames.QueryFrameIndices, TensorElementKind.Int64, 1, -1, 0);
+                    Input(contract, model, report, TensorNames.KeyMemory, TensorElementKind.Float32, 4 + b, -1, 0);
+                    Input(contract, model, report, TensorNames.QueryFrameIndices, TensorElementKind.Int64, 1 + b, -1, 0);
                     Input(contract, model, report, TensorNames.GapLength, TensorElementKind.Int64, 1, -1, 0);
                     OnlyInputs(contract, model, report, TensorNames.KeyMemory, TensorNames.QueryFrameIndices, TensorNames.GapLength);
                     Output(contract, model, report, TensorNames.RootPositionDelta, TensorElementKind.Float32);

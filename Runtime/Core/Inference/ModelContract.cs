@@ -20,13 +20,13 @@ namespace DeltaInterpolator.Core.Inference
     public sealed class ModelContract
     {
         /// <summary>The contract version this runtime implements (Python: <c>CONTRACT_VERSION</c>).</summary>
-        public const int Version = 1;
+        public const int Version = 2;
 
         /// <summary>Oldest contract version this runtime reads.</summary>
         public const int MinSupportedVersion = 1;
 
         /// <summary>Newest contract version this runtime reads.</summary>
-        public const int MaxSupportedVersion = 1;
+        public const int MaxSupportedVersion = 2;
 
         /// <summary>Features per joint in <c>key_features</c>: local 6D rotation then global position.</summary>
         public const int FeaturesPerJoint = 9;
@@ -50,6 +50,12 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>The contract version the model was exported with.</summary>
         public int ContractVersion { get; private set; }
+
+        /// <summary>
+        /// True from contract version 2: every graph input and output has a leading batch axis (one row per
+        /// transition), so many characters' work runs in one call. Version 1 graphs run one transition at a time.
+        /// </summary>
+        public bool HasBatchAxis => ContractVersion >= 2;
 
         /// <summary>The model's name, e.g. <c>DeltaInterpolator-LaFAN1</c>.</summary>
         public string Name { get; private set; } = "";

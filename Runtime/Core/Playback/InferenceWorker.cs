@@ -7,10 +7,10 @@ namespace DeltaInterpolator.Core.Playback
 {
     /// <summary>
     /// Runs the network on one background thread for every player of a model, so that a request costs the
-    /// main thread only the copy of its keys. With the lazy graphs it encodes the keys once and publishes
-    /// the missing frames one by one in playing order (the first frame is ready after the keys run and one
-    /// small frame run); without them it decodes the whole transition in one run. Requests are served in
-    /// order; frames of a request that was superseded are not decoded.
+    /// main thread only the copy of its keys, their features and the SLERP frames. Each round gathers the
+    /// work of every player into batched runs (<see cref="BatchScheduler"/>): the keys of all new requests,
+    /// then the next missing frame of every playing transition, most urgent first. Without the lazy graphs
+    /// it decodes whole transitions, one run each. Frames of a request that was superseded are not decoded.
     /// </summary>
     /// <remarks>
     /// The <see cref="Inference.Inbetweener"/> given is used only on the worker thread, so its backend must
@@ -20,25 +20,36 @@ namespace DeltaInterpolator.Core.Playback
     /// </remarks>
     public sealed class InferenceWorker : TransitionDecoder
     {
-        private readonly Queue<TransitionJob> _queue = new Queue<TransitionJob>(64);
-        private readonly Dictionary<long, LazyDecoder> _lazy = new Dictionary<long, LazyDecoder>();
+        private readonly Queue<TransitionJob> _queue = new Queue<TransitionJob>(256);
+        private readonly BatchScheduler _scheduler;
         private readonly Thread _thread;
-        private readonly bool _useLazy;
+        private volatile int _tokensPerRound = 4096;
         private bool _stopping;
 
         /// <summary>Starts the worker thread.</summary>
         /// <param name="inbetweener">The model; owned by the worker from now on.</param>
         /// <param name="lazy">Decode frame by frame when the lazy graphs are loaded (default); false: whole transitions.</param>
-        public InferenceWorker(Inbetweener inbetweener, bool lazy = true)
+        /// <param name="maxBatch">Most transitions per run (1: one run per request and frame, unbatched).</param>
+        public InferenceWorker(Inbetweener inbetweener, bool lazy = true, int maxBatch = 256)
             : base(inbetweener)
         {
-            _useLazy = lazy && inbetweener.SupportsLazyDecoding;
+            _scheduler = new BatchScheduler(inbetweener, maxBatch, useAsync: false, lazy);
             _thread = new Thread(Loop) { IsBackground = true, Name = "DeltaInterpolator inference" };
             _thread.Start();
         }
 
         /// <summary>True when frames are published one by one (lazy graphs), false when whole transitions are.</summary>
-        public bool DecodesLazily => _useLazy;
+        public bool DecodesLazily => _scheduler.Lazy;
+
+        /// <summary>
+        /// Most tokens one round of the worker runs (a request's keys cost P + 1, a frame 1; default 4096):
+        /// a burst of requests is encoded over several rounds, with frames of playing transitions between them.
+        /// </summary>
+        public int TokensPerRound
+        {
+            get => _tokensPerRound;
+            set => _tokensPerRound = value >= 1 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "expected at least 1 token per round");
+        }
 
         /// <inheritdoc />
         public override void Dispose()
@@ -53,6 +64,7 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             _thread.Join();
+            _scheduler.Dispose();
             Inbetweener.Dispose();
         }
 
@@ -67,61 +79,43 @@ namespace DeltaInterpolator.Core.Playback
             }
         }
 
-        internal override void Ensure(TransitionJob job, int frames)
+        internal override void Need(TransitionJob job, int frames, double time)
         {
-            // Frames arrive from the worker; the player shows what is there and never waits.
+            // Frames arrive from the worker; the player shows what is there (SLERP for the rest) and never waits.
+            job.Needed = frames;
+        }
+
+        internal override bool Drain(TransitionJob job, int millisecondsTimeout)
+        {
+            job.Needed = job.Transition.MissingFrames;
+            var spin = new SpinWait();
+            int start = Environment.TickCount;
+            while (job.Decoded < job.Transition.MissingFrames && job.Error == null && !job.Finished)
+            {
+                if (unchecked(Environment.TickCount - start) > millisecondsTimeout) return false;
+                spin.SpinOnce();
+            }
+
+            return job.Decoded >= job.Transition.MissingFrames;
         }
 
         private void Loop()
         {
             while (true)
             {
-                TransitionJob job;
                 lock (_queue)
                 {
-                    while (_queue.Count == 0 && !_stopping) Monitor.Wait(_queue);
-                    if (_stopping) return;
-                    job = _queue.Dequeue();
+                    while (_queue.Count == 0 && _scheduler.ActiveCount == 0 && !_stopping) Monitor.Wait(_queue);
+                    if (_stopping)
+                    {
+                        _scheduler.FinishAll();
+                        return;
+                    }
+
+                    while (_queue.Count > 0) _scheduler.Add(_queue.Dequeue());
                 }
 
-                try
-                {
-                    if (!job.Cancelled) Decode(job);
-                }
-                catch (Exception e)
-                {
-                    job.Error = e;
-                }
-                finally
-                {
-                    job.Finish();
-                }
-            }
-        }
-
-        private void Decode(TransitionJob job)
-        {
-            var t = job.Transition;
-            if (!_useLazy)
-            {
-                Inbetweener.Inbetween(t);
-                job.Publish(t.MissingFrames);
-                return;
-            }
-
-            long key = ((long)t.PastFrames << 32) | (uint)t.MissingFrames;
-            if (!_lazy.TryGetValue(key, out LazyDecoder? lazy))
-            {
-                lazy = Inbetweener.CreateLazy(t.PastFrames, t.MissingFrames);
-                _lazy.Add(key, lazy);
-            }
-
-            lazy.Begin(t);
-            for (int k = 0; k < t.MissingFrames; k++)
-            {
-                if (job.Cancelled) return;
-                lazy.DecodeFrame(k);
-                job.Publish(k + 1);
+                _scheduler.Pump(_tokensPerRound);
             }
         }
     }

@@ -25,6 +25,12 @@ namespace DeltaInterpolator.Core.Playback
             set => _blendOut = Check(value, nameof(BlendOutSeconds));
         }
 
+        /// <summary>
+        /// A level of detail for characters far from the camera: requests play the SLERP of their keys and
+        /// never run the network (read at each request).
+        /// </summary>
+        public bool SlerpOnly { get; set; }
+
         /// <summary>Past model frames fed to the network (P); 0 takes the largest the model was trained with.</summary>
         public int PastFrames { get; set; }
 

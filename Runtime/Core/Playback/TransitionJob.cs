@@ -2,30 +2,86 @@ using System;
 using System.Threading;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Playback
 {
     /// <summary>
-    /// One request's network work: its keys and missing frames (a <see cref="Transition"/>) and how many
-    /// frames are decoded so far. The main thread writes the keys before handing the job to a
-    /// <see cref="TransitionDecoder"/> and reads frames below <see cref="Decoded"/>; a worker thread writes
-    /// frame k before publishing Decoded = k + 1 (release/acquire through <see cref="Volatile"/>).
+    /// One request's network work: its keys and missing frames (a <see cref="Transition"/>), the SLERP
+    /// pose of every missing frame (written on the main thread at the request, shown until the network's
+    /// frame arrives), the localized keys and their features, and how many frames are decoded so far. The
+    /// main thread writes the keys before handing the job to a <see cref="TransitionDecoder"/> and reads
+    /// frames below <see cref="Decoded"/>; a worker thread writes frame k before publishing Decoded = k + 1
+    /// (release/acquire through <see cref="Volatile"/>).
     /// </summary>
     internal sealed class TransitionJob
     {
         private int _decoded;
         private int _finished = 1;
         private int _cancelled;
+        private int _needed;
 
-        public TransitionJob(Transition transition)
+        public TransitionJob(Transition transition, int keyFeatureSize)
         {
             Transition = transition;
+            int n = transition.MissingFrames;
+            int j = transition.Skeleton.JointCount;
+            int k = transition.KeyFrameCount;
+            SlerpRoots = new double[n * 3];
+            SlerpRotations = new double[n * j * 4];
+            LocalRoot = new double[k * 3];
+            LocalRotations = new double[k * j * 4];
+            Pairs = new SlerpPair[j];
+            KeyFeatures = new float[k * keyFeatureSize];
         }
 
         public Transition Transition { get; }
 
+        /// <summary>The SLERP pose of each missing frame (world, n × 3 and n × J × 4): the baseline of the same request.</summary>
+        public double[] SlerpRoots { get; }
+
+        /// <summary>See <see cref="SlerpRoots"/>.</summary>
+        public double[] SlerpRotations { get; }
+
+        /// <summary>The keys, localized (K × 3, model units).</summary>
+        public double[] LocalRoot { get; }
+
+        /// <summary>The keys' local rotations, localized (K × J × 4).</summary>
+        public double[] LocalRotations { get; }
+
+        /// <summary>Each joint's slerp between the last past key and the target (localized).</summary>
+        public SlerpPair[] Pairs { get; }
+
+        /// <summary>The request's localization (yaw and origin).</summary>
+        public Localization Localization { get; set; }
+
+        /// <summary>The request's <c>key_features</c> row (K × 9J), built on the main thread at the request.</summary>
+        public float[] KeyFeatures { get; }
+
+        /// <summary>The request's key encoding (R × 2 × K × D), written by the scheduler's keys run; null until the first one.</summary>
+        public float[]? KeyMemory { get; set; }
+
+        /// <summary>Order of the request among all of its decoder's (older first).</summary>
+        public long Sequence { get; set; }
+
+        /// <summary>Bumped at every <see cref="Reset"/>: tells a batch row filled for an earlier request of this job from this one.</summary>
+        public int Generation { get; private set; }
+
+        /// <summary>Scheduler state (one thread): keys encoded.</summary>
+        public bool Encoded { get; set; }
+
+        /// <summary>Scheduler state (one thread): part of a run not collected yet.</summary>
+        public bool InFlight { get; set; }
+
         /// <summary>Missing frames decoded so far (0..n), in order.</summary>
         public int Decoded => Volatile.Read(ref _decoded);
+
+        /// <summary>Missing frames playback needs by now (written by the main thread each frame; the scheduler decodes the most urgent first).</summary>
+        public int Needed
+        {
+            get => Volatile.Read(ref _needed);
+            set => Volatile.Write(ref _needed, value);
+        }
 
         /// <summary>True when no decoder touches the job any more (it may be reused).</summary>
         public bool Finished => Volatile.Read(ref _finished) != 0;
@@ -42,6 +98,10 @@ namespace DeltaInterpolator.Core.Playback
         public void Reset()
         {
             Error = null;
+            Encoded = false;
+            InFlight = false;
+            Generation++;
+            Volatile.Write(ref _needed, 0);
             Volatile.Write(ref _decoded, 0);
             Volatile.Write(ref _cancelled, 0);
             Volatile.Write(ref _finished, 0);

@@ -12,7 +12,9 @@ namespace DeltaInterpolator.Core.Playback
     /// (<see cref="PoseHistory"/>), turns <see cref="RequestTransition"/> into a network request at the
     /// model's frame rate, and plays the answer at whatever rate the game renders, interpolating between
     /// model frames, blended over the character's own animation. Everything the Unity component does per
-    /// frame is here, tested by a simulated frame loop.
+    /// frame is here, tested by a simulated frame loop. A frame is never frozen: until the network's frames
+    /// of a request arrive, it shows the request's SLERP pose (the network's own baseline), and the
+    /// network's correction eases in when they do (<see cref="Correction"/>).
     /// </summary>
     /// <remarks>
     /// <para>Each rendered frame: <see cref="BeginFrame"/> (the transition's pose and weight for the frame
@@ -23,7 +25,7 @@ namespace DeltaInterpolator.Core.Playback
     /// frames are spread evenly over exactly d seconds from the newest recorded frame t0, so the first
     /// rendered frame at or after t0 + d shows the target pose (weight 1), and
     /// <see cref="TransitionCompleted"/> fires in that frame. Missing frames come from the decoder;
-    /// until the ones a frame needs are there, the pose last shown by the transition is held.</para>
+    /// until the ones a frame needs are there, the frame shows the SLERP pose of the same request.</para>
     /// <para>A request made during a transition starts from the pose being shown (the newest recorded)
     /// at full weight, so the motion stays continuous; the interrupted request completes with
     /// <see cref="TransitionCompletion.ReachedTarget"/> false. After the target, the weight eases back to
@@ -49,8 +51,7 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _targetRotations;
         private readonly double[] _shownRoot = new double[3];
         private readonly double[] _shownRotations;
-        private readonly double[] _modelRoot = new double[3];
-        private readonly double[] _modelRotations;
+        private readonly EaseIn _ease;
         private TransitionJob? _job;
         private int _requestId;
         private int _nextId;
@@ -64,6 +65,7 @@ namespace DeltaInterpolator.Core.Playback
         private double _startWeight;
         private double _weight;
         private int _gap;
+        private int _neededBefore;
         private TransitionCompletion? _pendingCompletion;
         private TransitionCompletion? _pendingInterruption;
 
@@ -93,7 +95,7 @@ namespace DeltaInterpolator.Core.Playback
             _poseRotations = new double[b * 4];
             _targetRotations = new double[b * 4];
             _shownRotations = new double[b * 4];
-            _modelRotations = new double[_joints * 4];
+            _ease = new EaseIn(_joints);
         }
 
         /// <summary>Reports every request exactly once: when its target pose is shown, or when it is interrupted or cancelled.</summary>
@@ -141,6 +143,9 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>The current request's network problem (keys and missing frames, model space), or null.</summary>
         public Transition? CurrentTransition => _job?.Transition;
 
+        /// <summary>The current request's job (SLERP and network frames), for tests and tools.</summary>
+        internal TransitionJob? CurrentJob => _job;
+
         /// <summary>Missing frames of the current request decoded so far.</summary>
         public int DecodedFrames => _job?.Decoded ?? 0;
 
@@ -157,6 +162,20 @@ namespace DeltaInterpolator.Core.Playback
         }
 
         private int MissingFramesFor(double durationSeconds) => Math.Max(2, (int)Math.Round(durationSeconds * FrameRate)) - 1;
+
+        /// <summary>
+        /// How much of the network's correction this frame shows over the request's SLERP pose (0: SLERP only,
+        /// while the network's frames have not arrived or with <see cref="PlaybackSettings.SlerpOnly"/>; 1: the
+        /// network's pose). It rises when the frames arrive as fast as keeps every joint's turn between two
+        /// shown frames within 1.2 × the larger of SLERP's and the network's own turn there, plus 0.45°.
+        /// </summary>
+        public double Correction => _ease.Weight;
+
+        /// <summary>Model frames, over all requests, that playback needed before the network had decoded them (each was shown as SLERP).</summary>
+        public int LateModelFrames { get; private set; }
+
+        /// <summary>Rendered frames, over all requests, whose transition pose was the previous frame's although time moved on (a frozen frame); 0 by design.</summary>
+        public int HeldFrames { get; private set; }
 
         /// <summary>
         /// Asks for a transition from the pose shown now to <paramref name="targetRotations"/> in
@@ -202,12 +221,25 @@ namespace DeltaInterpolator.Core.Playback
             targetRotations.Slice(0, r).CopyTo(_targetRotations);
             if (!_inFrame)
             {
-                // Hold the pose shown until the first frames are decoded.
+                // Until the next frame: the pose shown (the transition's frame 0).
                 new ReadOnlySpan<double>(_pastRoots, 3 * (PastFrames - 1), 3).CopyTo(_poseRoot);
                 new ReadOnlySpan<double>(_pastRotations, r * (PastFrames - 1), r).CopyTo(_poseRotations);
             }
 
-            _decoder.Start(job);
+            // The SLERP frames are known now; the network's correction follows when the decoder has run.
+            _decoder.Prepare(job);
+            if (_settings.SlerpOnly)
+            {
+                job.Reset();
+                job.Finish();
+            }
+            else
+            {
+                _decoder.Start(job);
+            }
+
+            _ease.Begin(t);
+            _neededBefore = 0;
             _job = job;
             _requestId = ++_nextId;
             _playing = true;
@@ -274,17 +306,8 @@ namespace DeltaInterpolator.Core.Playback
         public bool WaitUntilDecoded(int millisecondsTimeout)
         {
             TransitionJob? job = _job;
-            if (job == null || !_playing) return true;
-            _decoder.Ensure(job, job.Transition.MissingFrames);
-            var spin = new SpinWait();
-            int start = Environment.TickCount;
-            while (job.Decoded < job.Transition.MissingFrames && job.Error == null && !job.Finished)
-            {
-                if (unchecked(Environment.TickCount - start) > millisecondsTimeout) return false;
-                spin.SpinOnce();
-            }
-
-            return job.Decoded >= job.Transition.MissingFrames;
+            if (job == null || !_playing || _settings.SlerpOnly) return true;
+            return _decoder.Drain(job, millisecondsTimeout);
         }
 
         private void Advance(double time)
@@ -335,49 +358,20 @@ namespace DeltaInterpolator.Core.Playback
             int a = Math.Min((int)Math.Floor(u), _gap - 1);
             double f = u - a;
             int need = Math.Min(a + 1, _gap - 1);
-            _decoder.Ensure(job, need);
-            if (job.Decoded >= need) Interpolate(job.Transition, a, f);
+            _decoder.Need(job, need, time);
+            int decoded = job.Decoded;
+            if (need > _neededBefore)
+            {
+                // Frames playback reaches now that the network has not answered yet: shown as SLERP.
+                if (decoded < need && !_settings.SlerpOnly) LateModelFrames += need - Math.Max(decoded, _neededBefore);
+                _neededBefore = need;
+            }
+
+            if (_ease.Show(job, a, f, decoded >= need)) HeldFrames++;
+            _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
             double blendIn = Math.Min(_settings.BlendInSeconds, _duration);
             double w = blendIn > 0 ? SmoothStep(Math.Max(0, s) / blendIn) : 1;
             _weight = _startWeight + (1 - _startWeight) * w;
-        }
-
-        /// <summary>The pose between model frames a and a + 1 (0: last past key, G: target) at fraction f, into the pose buffers.</summary>
-        private void Interpolate(Transition t, int a, double f)
-        {
-            int jr = 4 * _joints;
-            GetFrame(t, a, out double[] rootsA, out int rootA, out double[] rotsA, out int rotA);
-            GetFrame(t, a + 1, out double[] rootsB, out int rootB, out double[] rotsB, out int rotB);
-            for (int c = 0; c < 3; c++) _modelRoot[c] = rootsA[rootA + c] + f * (rootsB[rootB + c] - rootsA[rootA + c]);
-            for (int j = 0; j < _joints; j++)
-            {
-                QuaternionD qa = QuaternionD.Read(rotsA, rotA + 4 * j);
-                QuaternionD qb = QuaternionD.Read(rotsB, rotB + 4 * j);
-                QuaternionD q = f == 0 ? qa : Quaternions.Normalize(new SlerpPair(qa, qb).At(f));
-                q.Write(_modelRotations, 4 * j);
-            }
-
-            _map.ToCharacter(_modelRoot, new ReadOnlySpan<double>(_modelRotations, 0, jr), _poseRoot, _poseRotations);
-        }
-
-        /// <summary>Model frame i of the transition: 0 is the last past key, 1..n the missing frames, G the target.</summary>
-        private void GetFrame(Transition t, int i, out double[] roots, out int rootOffset, out double[] rotations, out int rotationOffset)
-        {
-            int jr = 4 * _joints;
-            if (i == 0 || i == _gap)
-            {
-                int key = i == 0 ? t.PastFrames - 1 : t.PastFrames;
-                roots = t.KeyRootPositions;
-                rootOffset = 3 * key;
-                rotations = t.KeyLocalRotations;
-                rotationOffset = jr * key;
-                return;
-            }
-
-            roots = t.RootPositions;
-            rootOffset = 3 * (i - 1);
-            rotations = t.LocalRotations;
-            rotationOffset = jr * (i - 1);
         }
 
         private void Interrupt(double time)
@@ -411,7 +405,7 @@ namespace DeltaInterpolator.Core.Playback
                 if (j != _job && j.Finished && j.Transition.PastFrames == past && j.Transition.MissingFrames == missing) return j;
             }
 
-            var job = new TransitionJob(new Transition(_decoder.Contract.Skeleton, past, missing));
+            var job = new TransitionJob(new Transition(_decoder.Contract.Skeleton, past, missing), _decoder.Contract.KeyFeatureSize);
             _jobs.Add(job);
             return job;
         }

@@ -61,8 +61,8 @@ namespace DeltaInterpolator.Tests.Inference
         [Test]
         public void NewerVersionIsRefusedWithWhatToDo()
         {
-            string m = Refuse(Whole(MetadataJson(version: 2), versionText: "2"));
-            Assert.That(m, Is.EqualTo(Source + ": the model has contract version 2; expected a version from 1 to 1; update the package, or export the model with a trainer of the matching version"));
+            string m = Refuse(Whole(MetadataJson(version: 3), versionText: "3"));
+            Assert.That(m, Is.EqualTo(Source + ": the model has contract version 3; expected a version from 1 to 2; update the package, or export the model with a trainer of the matching version"));
         }
 
         [Test]

@@ -77,7 +77,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             GraphTensors frame = GraphTensors.ForFrame(c, keys, 1);
             Assert.That(frame.KeyMemory, Is.SameAs(keys.KeyMemory));
             Assert.That(frame.GapLength, Is.SameAs(keys.GapLength));
-            Assert.That(keys.KeyMemory!.Shape, Is.EqualTo(new long[] { c.Architecture.Blocks, 2, 5, c.Architecture.Width }));
+            // Contract version 2: a batch axis first (one row here).
+            Assert.That(keys.KeyMemory!.Shape, Is.EqualTo(new long[] { 1, c.Architecture.Blocks, 2, 5, c.Architecture.Width }));
+            Assert.That(frame.QueryFrameIndices!.Shape, Is.EqualTo(new long[] { 1, 1 }));
             frame.SetQuery(11);
             Assert.That(frame.QueryFrameIndices!.Longs, Is.EqualTo(new long[] { 4 + 11 }));
             Assert.Throws<ArgumentOutOfRangeException>(() => frame.SetQuery(12));

@@ -43,10 +43,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void OtherContractVersionIsRefused()
         {
-            string path = Patched("v2.onnx", ("contract_version\u0012\u00011", "contract_version\u0012\u00012"), ("\"contract_version\": 1", "\"contract_version\": 2"));
+            string path = Patched("v3.onnx", ("contract_version\u0012\u00012", "contract_version\u0012\u00013"), ("\"contract_version\": 2", "\"contract_version\": 3"));
             string message = Refusal(path);
-            Assert.That(message, Does.Contain("contract version 2"));
-            Assert.That(message, Does.Contain("expected a version from 1 to 1"));
+            Assert.That(message, Does.Contain("contract version 3"));
+            Assert.That(message, Does.Contain("expected a version from 1 to 2"));
         }
 
         [Test]

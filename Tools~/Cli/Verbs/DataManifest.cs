@@ -71,7 +71,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 return m;
             }
 
-            if (!File.Exists(spec)) throw new CliErrors.UsageException($"{spec}: no such file or folder; expected a folder of BVH files or a data manifest (.json)");
+            Core.IO.InputFile.Check(spec, "a folder of BVH files or a data manifest (.json)");
             var probe = new DataManifest("", spec);
             string folder = probe.Read(spec, expectFolder: true)!;
             var manifest = new DataManifest(folder, spec);
@@ -84,12 +84,14 @@ namespace DeltaInterpolator.Cli.Verbs
         {
             var result = new List<Entry>();
             string root = System.IO.Path.GetFullPath(Folder);
-            var files = new List<string>(Directory.EnumerateFiles(root, "*", SearchOption.AllDirectories));
+            // Bounded depth: a symbolic link that loops back into the folder cannot recurse forever.
+            var files = new List<string>(Directory.EnumerateFiles(root, "*", new EnumerationOptions { RecurseSubdirectories = true, MaxRecursionDepth = 16, AttributesToSkip = 0, IgnoreInaccessible = true }));
             files.Sort(StringComparer.Ordinal);
             string baseDir = Path == null ? root : System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(Path))!;
             foreach (string file in files)
             {
                 if (!file.EndsWith(".bvh", StringComparison.OrdinalIgnoreCase)) continue;
+                Core.IO.InputFile.Check(file, "BVH files (a FIFO, device or folder named .bvh is refused)");
                 string name = System.IO.Path.GetRelativePath(root, file).Replace('\\', '/');
                 string leaf = System.IO.Path.GetFileName(file);
                 if (only.Count > 0 && !Matches(only, name, leaf)) continue;
@@ -151,12 +153,12 @@ namespace DeltaInterpolator.Cli.Verbs
         /// <returns>The folder the manifest names (when <paramref name="expectFolder"/>).</returns>
         private string? Read(string path, bool expectFolder)
         {
-            var info = new FileInfo(path);
-            if (info.Length > MaxBytes) throw new CliErrors.UsageException($"{path}: {info.Length} bytes; expected a data manifest under {MaxBytes} bytes");
+            // Regular files only, size-bounded before reading (a FIFO or /dev/zero never blocks or grows).
+            string text = Core.IO.InputFile.ReadAllText(path, "a data manifest (.json)", MaxBytes);
             JsonDocument doc;
             try
             {
-                doc = JsonDocument.Parse(File.ReadAllText(path), new JsonDocumentOptions { MaxDepth = 16 });
+                doc = JsonDocument.Parse(text, new JsonDocumentOptions { MaxDepth = 16 });
             }
             catch (JsonException e)
             {

@@ -95,7 +95,7 @@ namespace DeltaInterpolator.Cli.Verbs
             if (every < 1) throw new CliErrors.UsageException($"inbetween score: --every {every}; expected 1 or more frames");
             var models = new List<string>(parse.GetValue(_models) ?? Array.Empty<string>());
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
-            foreach (string m in models) if (!File.Exists(m)) throw new CliErrors.UsageException($"{m}: no such file; expected an exported model (NAME.onnx)");
+            foreach (string m in models) Core.IO.InputFile.Check(m, "an exported model (NAME.onnx)");
             string[] only = parse.GetValue(_only) ?? Array.Empty<string>();
             string? jsonPath = parse.GetValue(_json);
             var manifests = new List<DataManifest>();

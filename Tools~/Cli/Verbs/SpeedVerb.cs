@@ -45,6 +45,12 @@ namespace DeltaInterpolator.Cli.Verbs
             DefaultValueFactory = _ => 500,
         };
 
+        private readonly Option<int> _characters = new Option<int>("--characters")
+        {
+            Description = "characters of the crowd benchmark (all request a transition in the same frame; the JSON's \"crowd\" object); 0 skips it",
+            DefaultValueFactory = _ => 64,
+        };
+
         private readonly Option<string> _json = new Option<string>("--json")
         {
             Description = "Where to write the results: {\"model\", \"threads\", \"transition_ms\": {\"5\",\"15\",\"30\"}, \"network_ms\", \"lazy_frame_ms\", \"slerp_fk_us\", \"alloc_bytes_per_transition\", \"pytorch_transition_ms\", \"speedup_vs_pytorch\", \"paper_pytorch_transition_ms\"}; each time is {\"median\", \"p95\", \"samples\"}.",
@@ -74,6 +80,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_pytorch);
             command.Options.Add(_repeats);
             command.Options.Add(_json);
+            command.Options.Add(_characters);
             _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
@@ -179,6 +186,16 @@ namespace DeltaInterpolator.Cli.Verbs
                 results["pytorch_transition_ms"] = null;
                 results["speedup_vs_pytorch"] = null;
                 results["paper_pytorch_transition_ms"] = null;
+            }
+
+            int characters = parse.GetValue(_characters);
+            if (characters < 0) throw new CliErrors.UsageException($"inbetween speed: --characters {characters}; expected 0 (skip) or more");
+            if (characters > 0 && model.SupportsLazyDecoding)
+            {
+                AnsiConsole.MarkupLine(Markup.Escape($"Crowd: {characters} characters requesting a transition in the same frame..."));
+                JsonObject crowd = CrowdBenchmark.Run(modelPath, options, characters);
+                results["crowd"] = crowd;
+                AnsiConsole.MarkupLine(Markup.Escape("crowd: " + crowd.ToJsonString()));
             }
 
             OutputFile.WriteAllText(jsonPath, results.ToJsonString(new JsonSerializerOptions { WriteIndented = true }));

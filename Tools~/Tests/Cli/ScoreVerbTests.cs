@@ -128,5 +128,47 @@ namespace DeltaInterpolator.Tests.Cli
             File.WriteAllText(manifest, "{\"folder\": \".\", \"default\": {}}");
             CliHarness.AssertOneErrorLine(CliHarness.Run("score", manifest, "--every", "60"), "unknown field");
         }
-    }
+    
+        [Test]
+        public void ScoreAndBakeJsonTakeHostileInputsAsBadInput()
+        {
+            // A FIFO as the manifest and as a BVH file in the folder: refused at once, never read (no hang).
+            string fifo = CliHarness.MakeFifo(Path.Combine(_dir, "m.json"));
+            CliRun run = CliHarness.RunWithin(30, "score", fifo, "--every", "60");
+            CliHarness.AssertOneErrorLine(run);
+            string data = Path.Combine(_dir, "data");
+            Directory.CreateDirectory(data);
+            File.Copy(Sample, Path.Combine(data, "a.bvh"));
+            CliHarness.MakeFifo(Path.Combine(data, "b.bvh"));
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "score", data, "--every", "60"), "b.bvh");
+            File.Delete(Path.Combine(data, "b.bvh"));
+
+            // A huge manifest is refused before it is read; a control character in a field name is printed escaped.
+            string huge = Path.Combine(data, "inbetween-data.json");
+            File.WriteAllText(huge, "{\"comment\": \"" + new string('x', 2 << 20) + "\"}");
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "score", data, "--every", "60"), "bytes");
+            File.WriteAllText(huge, "{\"\\u001b]0;pwned\\u0007\": 1}");
+            string line = CliHarness.AssertOneErrorLine(CliHarness.Run("score", data, "--every", "60"), "unknown field");
+            Assert.That(line.IndexOf((char)0x1b), Is.EqualTo(-1), "printed escaped (ordinal: culture-aware Contains ignores control characters)");
+            File.Delete(huge);
+
+            // --json: a folder, an input, the same path as --out.
+            CliHarness.AssertOneErrorLine(CliHarness.Run("score", data, "--every", "60", "--json", _dir));
+            string input = Path.Combine(data, "a.bvh");
+            byte[] before = File.ReadAllBytes(input);
+            CliHarness.AssertOneErrorLine(CliHarness.Run("score", data, "--every", "60", "--json", input, "--force"), "input");
+            CliHarness.AssertOneErrorLine(CliHarness.Run("bake", input, "--every", "60", "--out", Path.Combine(_dir, "o.bvh"), "--json", input, "--force"), "input");
+            string same = Path.Combine(_dir, "same.out");
+            CliHarness.AssertOneErrorLine(CliHarness.Run("bake", input, "--every", "60", "--out", same, "--json", same), "same file");
+            Assert.That(File.ReadAllBytes(input), Is.EqualTo(before), "no input was changed");
+
+            // Non-finite motion in a scored file: refused, nothing written.
+            string broken = Path.Combine(data, "a.bvh");
+            File.WriteAllText(broken, File.ReadAllText(Sample).Replace("\n0.", "\n1e308 ", StringComparison.Ordinal));
+            string json = Path.Combine(_dir, "scores.json");
+            CliRun nonFinite = CliHarness.Run("score", data, "--every", "60", "--json", json);
+            Assert.That(nonFinite.ExitCode, Is.EqualTo(2), nonFinite.ToString());
+            Assert.That(File.Exists(json), Is.False);
+        }
+}
 }

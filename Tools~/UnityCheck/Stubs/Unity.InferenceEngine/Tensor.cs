@@ -11,6 +11,10 @@ namespace Unity.InferenceEngine
 
         public void CompleteAllPendingOperations() => throw null!;
 
+        public bool IsReadbackRequestDone() => throw null!;
+
+        public void ReadbackRequest() => throw null!;
+
         public void Dispose() => throw null!;
     }
 

@@ -1,0 +1,462 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.OnnxRuntime;
+using DeltaInterpolator.Tests.Playback;
+using NUnit.Framework;
+
+namespace DeltaInterpolator.Tests.OnnxRuntime
+{
+    /// <summary>
+    /// Many characters on one decoder in a simulated 60 fps frame loop: batched runs equal one run per
+    /// character (real ONNX Runtime, tiny model, contract version 2 and the version 1 file), a frame whose
+    /// network output is late shows the request's SLERP pose and the correction eases in without a hold or
+    /// a pop (a stand-in backend with a known latency), a burst of requests is spread over frames by the
+    /// scheduler's budget (a stand-in backend that counts the work), and a playing crowd allocates nothing.
+    /// </summary>
+    [TestFixture]
+    public sealed class CrowdTests
+    {
+        private const double Fps = 60;
+
+        [Test]
+        public void BatchedRunsEqualOneRunPerCharacterAndOldFilesStillLoad()
+        {
+            using var batched = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 12, seed: 1);
+            using var single = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true), maxBatch: 1), 12, seed: 1);
+            using var v1 = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(V1Model, requireLazy: true)), 12, seed: 1);
+            Assert.That(v1.Decoder.Contract.ContractVersion, Is.EqualTo(1));
+            foreach (Crowd c in new[] { batched, single, v1 })
+            {
+                c.PlayUntil(0.5);
+                c.RequestAll();
+                c.PlayUntil(1.3);
+            }
+
+            var b = (MainThreadDecoder)batched.Decoder;
+            var s = (MainThreadDecoder)single.Decoder;
+            Assert.That(b.Scheduler.Runs, Is.LessThan(s.Scheduler.Runs / 4), "in far fewer runs");
+            for (int i = 0; i < batched.Players.Count; i++)
+            {
+                TransitionJob x = batched.Players[i].CurrentJob!, y = single.Players[i].CurrentJob!, z = v1.Players[i].CurrentJob!;
+                Assert.That(z.Transition.MissingFrames, Is.EqualTo(x.Transition.MissingFrames), $"character {i}: the same request on the version 1 file");
+                Assert.That(z.Transition.PastFrames, Is.EqualTo(x.Transition.PastFrames), $"character {i}: the same request on the version 1 file");
+                Assert.That(x.Decoded, Is.EqualTo(x.Transition.MissingFrames));
+                Assert.That(y.Decoded, Is.EqualTo(y.Transition.MissingFrames));
+                Assert.That(MaxAbs(x.Transition.LocalRotations, y.Transition.LocalRotations), Is.LessThan(1e-5), $"character {i}: batched vs unbatched");
+                for (int e = 0; e < x.Transition.RootPositions.Length; e++)
+                {
+                    Assert.That(Math.Abs(x.Transition.RootPositions[e] - y.Transition.RootPositions[e]), Is.LessThan(1e-5 / 0.01), "root positions (data units, cm; 1e-5 m)");
+                }
+                Assert.That(MaxAbs(x.Transition.LocalRotations, z.Transition.LocalRotations), Is.LessThan(1e-5), $"character {i}: version 2 vs the version 1 file");
+            }
+        }
+
+        [TestCase(0)]
+        [TestCase(2)]
+        [TestCase(5)]
+        public void LateFramesShowSlerpAndTheCorrectionEasesInWithoutHoldOrPop(int latencyFrames)
+        {
+            using var crowd = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out _)), 8, seed: 2);
+            crowd.PlayUntil(0.5);
+            crowd.RequestAll();
+            var records = new List<(double U, double[] Shown, double Correction)>[crowd.Players.Count];
+            for (int i = 0; i < records.Length; i++) records[i] = new List<(double, double[], double)>();
+            while (crowd.Time < crowd.RequestTime + 0.38)
+            {
+                crowd.Step();
+                for (int i = 0; i < crowd.Players.Count; i++)
+                {
+                    TransitionPlayer p = crowd.Players[i];
+                    double u = (crowd.Time - crowd.RequestTime) / (p.TargetTime - crowd.RequestTime) * p.GapFrames;
+                    var model = new double[4 * crowd.Map.JointCount];
+                    crowd.Map.ToModel(p.PoseRoot, p.PoseRotations, new double[3], model);
+                    records[i].Add((u, model, p.Correction));
+                }
+            }
+
+            double slack = 0.5 * Math.PI / 180;
+            bool sawSlerp = false, sawEase = false;
+            for (int i = 0; i < crowd.Players.Count; i++)
+            {
+                TransitionPlayer p = crowd.Players[i];
+                Assert.That(p.HeldFrames, Is.EqualTo(0), "never a frozen frame");
+                Assert.That(p.WaitUntilDecoded(10000), Is.True);
+                TransitionJob job = p.CurrentJob!;
+                for (int r = 0; r < records[i].Count; r++)
+                {
+                    var (u, shown, correction) = records[i][r];
+                    double[] slerp = At(job, u, model: false);
+                    double[] net = At(job, u, model: true);
+                    if (correction == 0)
+                    {
+                        sawSlerp |= latencyFrames > 0;
+                        Assert.That(MaxAngle(shown, slerp), Is.LessThan(1e-6), $"character {i}, frame {r}: a late frame shows the request's SLERP pose");
+                    }
+                    else if (correction == 1)
+                    {
+                        Assert.That(MaxAngle(shown, net), Is.LessThan(1e-6), $"character {i}, frame {r}: the network's pose");
+                    }
+                    else
+                    {
+                        sawEase = true;
+                    }
+
+                    if (r == 0) continue;
+                    var (u0, shown0, _) = records[i][r - 1];
+                    double[] slerp0 = At(job, u0, model: false);
+                    double[] net0 = At(job, u0, model: true);
+                    for (int j = 0; j < crowd.Map.JointCount; j++)
+                    {
+                        double turn = EaseIn.Angle(shown0, shown, j);
+                        double bound = 1.25 * Math.Max(EaseIn.Angle(slerp0, slerp, j), EaseIn.Angle(net0, net, j)) + slack;
+                        Assert.That(turn, Is.LessThanOrEqualTo(bound), $"character {i}, frame {r}, joint {j}: no pop");
+                    }
+                }
+
+                // It rises as fast as the turn rule allows: at once without latency, over several frames after a late answer.
+                double last = records[i][records[i].Count - 1].Correction;
+                if (latencyFrames == 0) Assert.That(last, Is.EqualTo(1.0), "no latency: the network's pose from the first frames on");
+                else if (latencyFrames <= 2) Assert.That(last, Is.GreaterThan(0.0), "the correction is easing in");
+            }
+
+            if (latencyFrames > 0) Assert.That(sawSlerp, Is.True, "some frames were late");
+            if (latencyFrames == 2) Assert.That(sawEase, Is.True, "and the correction eased in");
+        }
+
+        [Test]
+        public void ABurstOfRequestsIsSpreadOverFramesWithinTheBudget()
+        {
+            Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs);
+            var decoder = new MainThreadDecoder(model) { TokensPerFrame = 200 };
+            using var crowd = new Crowd(decoder, 64, seed: 3);
+            crowd.PlayUntil(0.5);
+            crowd.RequestAll();
+            int frames = 0, maxTokens = 0;
+            long before = graphs[1].Tokens + graphs[2].Tokens;
+            while (crowd.Time < crowd.RequestTime + 0.4)
+            {
+                crowd.Step();
+                long now = graphs[1].Tokens + graphs[2].Tokens;
+                maxTokens = Math.Max(maxTokens, (int)(now - before));
+                Assert.That(decoder.LastFrameTokens, Is.EqualTo(now - before), "the stand-in ran what the scheduler says it scheduled");
+                before = now;
+                frames++;
+            }
+
+            Assert.That(maxTokens, Is.LessThanOrEqualTo(200), "no frame schedules more than its budget");
+            Assert.That(maxTokens, Is.GreaterThan(150), "and the budget is used");
+            foreach (TransitionPlayer p in crowd.Players)
+            {
+                Assert.That(p.HeldFrames, Is.EqualTo(0));
+                Assert.That(p.DecodedFrames, Is.GreaterThan(0), "every character got its network frames within 0.4 s");
+            }
+        }
+
+        [Test]
+        public void SlerpOnlyCharactersNeverRunTheNetwork()
+        {
+            Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs);
+            using var crowd = new Crowd(new MainThreadDecoder(model), 4, seed: 4, new PlaybackSettings { SlerpOnly = true });
+            crowd.PlayUntil(0.5);
+            long runs = graphs[1].Runs + graphs[2].Runs;
+            crowd.RequestAll();
+            crowd.PlayUntil(1.5);
+            Assert.That(graphs[1].Runs + graphs[2].Runs, Is.EqualTo(runs));
+            foreach (TransitionPlayer p in crowd.Players)
+            {
+                Assert.That(p.HeldFrames, Is.EqualTo(0));
+                Assert.That(p.Correction, Is.EqualTo(0));
+            }
+        }
+
+        [Test]
+        public void APlayingCrowdAllocatesNothingPerFrame()
+        {
+            using var crowd = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 16, seed: 5);
+            // A first round creates the jobs, batch tensors and bindings; the second is the steady state.
+            crowd.PlayUntil(0.5);
+            crowd.RequestAll();
+            crowd.PlayUntil(2.0);
+            crowd.RequestAll();
+            crowd.Step();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 40; i++) crowd.Step();
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 frames of 16 playing characters");
+        }
+
+        private static string V1Model => System.IO.Path.Combine(Fixtures.Directory, "tiny-model-v1.onnx");
+
+        private static double[] At(TransitionJob job, double u, bool model)
+        {
+            var t = job.Transition;
+            int g = t.MissingFrames + 1;
+            int jr = 4 * t.Skeleton.JointCount;
+            int a = Math.Min((int)Math.Floor(u), g - 1);
+            double f = u - a;
+            double[] Frame(int i, out int offset)
+            {
+                if (i == 0 || i == g)
+                {
+                    offset = jr * (i == 0 ? t.PastFrames - 1 : t.PastFrames);
+                    return t.KeyLocalRotations;
+                }
+
+                offset = jr * (i - 1);
+                return model ? t.LocalRotations : job.SlerpRotations;
+            }
+
+            double[] pa = Frame(a, out int oa), pb = Frame(a + 1, out int ob);
+            var result = new double[jr];
+            for (int j = 0; j < jr; j += 4)
+            {
+                Quaternions.Normalize(Quaternions.Slerp(QuaternionD.Read(pa, oa + j), QuaternionD.Read(pb, ob + j), f)).Write(result, j);
+            }
+
+            return result;
+        }
+
+        private static double MaxAngle(double[] a, double[] b)
+        {
+            double max = 0;
+            for (int j = 0; j < a.Length / 4; j++) max = Math.Max(max, EaseIn.Angle(a, b, j));
+            return max;
+        }
+
+        private static double MaxAbs(double[] a, double[] b)
+        {
+            double max = 0;
+            for (int i = 0; i < a.Length; i += 4)
+            {
+                // q and −q are the same rotation.
+                double same = 0, flipped = 0;
+                for (int c = 0; c < 4; c++)
+                {
+                    same = Math.Max(same, Math.Abs(a[i + c] - b[i + c]));
+                    flipped = Math.Max(flipped, Math.Abs(a[i + c] + b[i + c]));
+                }
+
+                max = Math.Max(max, Math.Min(same, flipped));
+            }
+
+            return max;
+        }
+
+        /// <summary>The tiny model's contract on <see cref="StandInBackend"/>s: [whole, keys, frame].</summary>
+        internal static Inbetweener StandInInbetweener(int latencyFrames, out StandInBackend[] graphs)
+        {
+            var descriptions = new ModelDescription[3];
+            string[] files = { Fixtures.TinyModel, Fixtures.TinyModel.Replace(".onnx", ".keys.onnx"), Fixtures.TinyModel.Replace(".onnx", ".frame.onnx") };
+            for (int i = 0; i < 3; i++)
+            {
+                using OnnxRuntimeBackend real = OnnxRuntimeBackend.Load(files[i]);
+                descriptions[i] = real.Description;
+            }
+
+            graphs = new[] { new StandInBackend(descriptions[0], latencyFrames), new StandInBackend(descriptions[1], latencyFrames), new StandInBackend(descriptions[2], latencyFrames) };
+            return new Inbetweener(graphs[0], graphs[1], graphs[2]);
+        }
+
+        /// <summary>N characters playing their own clips on one decoder, stepped together at 60 fps.</summary>
+        private sealed class Crowd : IDisposable
+        {
+            private readonly List<SyntheticClip> _clips = new List<SyntheticClip>();
+            private readonly ArrayPoseStream[] _streams;
+            private readonly int _seed;
+
+            public Crowd(TransitionDecoder decoder, int characters, int seed, PlaybackSettings? settings = null)
+            {
+                Decoder = decoder;
+                _seed = seed;
+                ModelContract c = decoder.Contract;
+                Map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                _streams = new ArrayPoseStream[characters];
+                for (int i = 0; i < characters; i++)
+                {
+                    // Past frames mixed the way a game mixes them: most characters with full history, some short.
+                    var s = settings ?? new PlaybackSettings { BlendInSeconds = 0, PastFrames = i % 4 == 3 ? 4 : 0 };
+                    Players.Add(new TransitionPlayer(Map, decoder, s));
+                    _clips.Add(new SyntheticClip(c.JointCount, seed * 1000 + i));
+                    _streams[i] = new ArrayPoseStream(new double[3], new double[4 * c.JointCount]);
+                }
+            }
+
+            public TransitionDecoder Decoder { get; }
+
+            public NameJointMap Map { get; }
+
+            public List<TransitionPlayer> Players { get; } = new List<TransitionPlayer>();
+
+            public double Time { get; private set; }
+
+            public double RequestTime { get; private set; }
+
+            private int _frame;
+            private int _round;
+
+            public void Step()
+            {
+                _frame++;
+                Time = _frame / Fps;
+                for (int i = 0; i < Players.Count; i++)
+                {
+                    _clips[i].Sample(Time, _streams[i].Root, _streams[i].Rotations);
+                    Players[i].Step(Time, ref _streams[i]);
+                }
+            }
+
+            public void PlayUntil(double time)
+            {
+                while (Time + 1 / Fps <= time + 1e-9) Step();
+            }
+
+            /// <summary>Every character asks for a transition in the same frame (durations 0.4–0.8 s, varied per character).</summary>
+            public void RequestAll()
+            {
+                _round++;
+                RequestTime = Time;
+                var root = new double[3];
+                var rotations = new double[4 * Map.BoneCount];
+                for (int i = 0; i < Players.Count; i++)
+                {
+                    _clips[i].Sample(Time + 3 + i * 0.1 + _round, root, rotations);
+                    Players[i].RequestTransition(root, rotations, 0.4 + 0.1 * ((i + _seed) % 5));
+                }
+            }
+
+            public void Dispose() => Decoder.Dispose();
+        }
+    }
+
+    /// <summary>
+    /// A stand-in inference engine with a known cost and latency: it answers the graphs of the contract
+    /// with smooth made-up numbers that depend on each row's inputs only, counts rows and tokens, and
+    /// (as a GPU would) finishes a scheduled run only after <c>latency</c> polls.
+    /// </summary>
+    internal sealed class StandInBackend : IInferenceBackend
+    {
+        private readonly int _latency;
+
+        public StandInBackend(ModelDescription description, int latency)
+        {
+            Description = description;
+            _latency = latency;
+        }
+
+        public ModelDescription Description { get; }
+
+        public long Runs { get; private set; }
+
+        public long Tokens { get; private set; }
+
+        public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs) => new Binding(this, inputs, outputs);
+
+        public void Dispose()
+        {
+        }
+
+        private sealed class Binding : IAsyncInferenceBinding
+        {
+            private readonly StandInBackend _owner;
+            private readonly Dictionary<string, InferenceTensor> _tensors = new Dictionary<string, InferenceTensor>();
+            private readonly IReadOnlyList<InferenceTensor> _outputs;
+            private int _polls = -1;
+
+            public Binding(StandInBackend owner, IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
+            {
+                _owner = owner;
+                foreach (InferenceTensor t in inputs) _tensors[t.Name] = t;
+                foreach (InferenceTensor t in outputs) _tensors[t.Name] = t;
+                _outputs = outputs;
+            }
+
+            public void Run()
+            {
+                Count();
+                Compute();
+            }
+
+            private void Count()
+            {
+                _owner.Runs++;
+                InferenceTensor gap = _tensors[TensorNames.GapLength];
+                int rows = (int)gap.Shape[0];
+                if (_tensors.TryGetValue(TensorNames.KeyFeatures, out InferenceTensor? keys)) _owner.Tokens += rows * keys.Shape[1];
+                else _owner.Tokens += _tensors[TensorNames.QueryFrameIndices].Length;
+            }
+
+            public void Schedule()
+            {
+                Count();
+                _polls = 0;
+            }
+
+            public bool TryComplete()
+            {
+                if (_polls < 0) throw new InvalidOperationException("nothing scheduled");
+                if (_polls++ < _owner._latency) return false;
+                _polls = -1;
+                Compute();
+                return true;
+            }
+
+            public void Dispose()
+            {
+            }
+
+            private void Compute()
+            {
+                long[] gap = _tensors[TensorNames.GapLength].Longs!;
+                int rows = (int)_tensors[TensorNames.GapLength].Shape[0];
+                foreach (InferenceTensor o in _outputs)
+                {
+                    switch (o.Name)
+                    {
+                        case TensorNames.ContractVersion: o.Longs![0] = 2; break;
+                        case TensorNames.JointCount: o.Longs![0] = 22; break;
+                        case TensorNames.KeyFeatureSize: o.Longs![0] = 198; break;
+                        case TensorNames.KeyMemory:
+                        {
+                            float[] f = _tensors[TensorNames.KeyFeatures].Floats!;
+                            int fw = (int)(_tensors[TensorNames.KeyFeatures].Length / rows);
+                            int mw = o.Length / rows;
+                            for (int r = 0; r < rows; r++)
+                            {
+                                for (int e = 0; e < mw; e++) o.Floats![r * mw + e] = (float)(0.5 * Math.Sin(0.37 * e + 3 * f[r * fw + e % fw] + 0.1 * gap[r]));
+                            }
+
+                            break;
+                        }
+
+                        case TensorNames.RootPositionDelta:
+                        case TensorNames.Rotation6DDelta:
+                        {
+                            InferenceTensor? memory = _tensors.TryGetValue(TensorNames.KeyMemory, out InferenceTensor? m) ? m : null;
+                            long[] query = _tensors[TensorNames.QueryFrameIndices].Longs!;
+                            int n = (int)(_tensors[TensorNames.QueryFrameIndices].Length / rows);
+                            int width = o.Length / (rows * n);
+                            for (int r = 0; r < rows; r++)
+                            {
+                                double seed = memory == null ? 0 : memory.Floats![r * (memory.Length / rows)];
+                                for (int q = 0; q < n; q++)
+                                {
+                                    double x = 0.25 * query[r * n + q];
+                                    for (int e = 0; e < width; e++)
+                                    {
+                                        double scale = o.Name == TensorNames.RootPositionDelta ? 0.02 : 0.25;
+                                        o.Floats![(r * n + q) * width + e] = (float)(scale * Math.Sin(x + 0.7 * e + seed));
+                                    }
+                                }
+                            }
+
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
