@@ -15,7 +15,7 @@ namespace DeltaInterpolator.Core.Inference
     /// <see cref="ToJson"/> (so an engine asset can keep it as a string), and checked by
     /// <see cref="ModelChecks"/>, which report every problem with a severity and a remedy. The throwing
     /// <see cref="Read(ModelDescription, ModelGraphKind)"/> refuses a model at its first error.
-    /// Python mirror: <c>Training/deltainterp/contract.py</c>.
+    /// Python mirror: <c>Training/Python~/deltainterp/contract.py</c>.
     /// </summary>
     public sealed class ModelContract
     {
