@@ -3,6 +3,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
 using Unity.InferenceEngine;
+using Unity.Profiling;
 
 namespace DeltaInterpolator.Sentis
 {
@@ -207,18 +208,27 @@ namespace DeltaInterpolator.Sentis
 
             public void AddOutput(InferenceTensor t) => _outputs.Add(t);
 
+            // Shown in the Profiler's CPU timeline on whichever thread decodes (main or worker): a blocking run,
+            // and the scheduling of an asynchronous one (its readback completes in TryComplete).
+            private static readonly ProfilerMarker s_Run = new ProfilerMarker("DeltaInterpolator.Sentis.Run");
+            private static readonly ProfilerMarker s_Schedule = new ProfilerMarker("DeltaInterpolator.Sentis.Schedule");
+
             public void Run()
             {
-                Start();
-                Worker worker = _owner._worker;
-                foreach (InferenceTensor t in _outputs)
+                using (s_Run.Auto())
                 {
-                    Read(worker.PeekOutput(t.Name), t);
+                    Start();
+                    Worker worker = _owner._worker;
+                    foreach (InferenceTensor t in _outputs)
+                    {
+                        Read(worker.PeekOutput(t.Name), t);
+                    }
                 }
             }
 
             public void Schedule()
             {
+                using var scope = s_Schedule.Auto();
                 Start();
                 _pending.Clear();
                 Worker worker = _owner._worker;

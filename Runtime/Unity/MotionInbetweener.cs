@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Inference;
+using Unity.Profiling;
 using DeltaInterpolator.Core.Playback;
 using Unity.Collections;
 using UnityEngine;
@@ -134,11 +135,19 @@ namespace DeltaInterpolator.Unity
 
         private void OnDisable() => TearDown();
 
+        // Profiler markers (Window → Analysis → Profiler, CPU timeline) around the component's per-frame stages:
+        // recording the pose shown last frame into the history, advancing the transition (which decodes
+        // frames, and runs the network when a request's chunk is due on the main thread), and sampling a
+        // request's target pose. Inference itself is marked by each backend (e.g. DeltaInterpolator.Sentis.Run).
+        private static readonly ProfilerMarker s_RecordHistory = new ProfilerMarker("MotionInbetweener.RecordHistory");
+        private static readonly ProfilerMarker s_Advance = new ProfilerMarker("MotionInbetweener.Advance");
+        private static readonly ProfilerMarker s_Request = new ProfilerMarker("MotionInbetweener.RequestTransition");
+
         private void Update()
         {
             if (_player == null) return;
-            FlushShownPose();
-            _player.BeginFrame(Time.timeAsDouble);
+            using (s_RecordHistory.Auto()) FlushShownPose();
+            using (s_Advance.Auto()) _player.BeginFrame(Time.timeAsDouble);
             Span<double> pose = _pose.AsSpan();
             _player.PoseRoot.CopyTo(pose.Slice(0, 3));
             _player.PoseRotations.CopyTo(pose.Slice(3));
@@ -243,10 +252,30 @@ namespace DeltaInterpolator.Unity
 
         private int Request(TransitionPlayer player, float seconds)
         {
-            // The pose shown last frame must be in the history before the request reads it.
-            FlushShownPose();
-            float length = seconds > 0 ? seconds : settings!.DefaultTransitionSeconds;
-            return player.RequestTransition(_targetRoot, _targetRotations, length);
+            using (s_Request.Auto())
+            {
+                // The pose shown last frame must be in the history before the request reads it.
+                FlushShownPose();
+                float length = seconds > 0 ? seconds : settings!.DefaultTransitionSeconds;
+                WarnOutsideTrainedRange(player, length);
+                return player.RequestTransition(_targetRoot, _targetRotations, length);
+            }
+        }
+
+        // A request outside the ranges the model was trained on runs, with one Console warning per distinct
+        // length (requests repeat every frame in some games: one warning is enough).
+        private readonly HashSet<int> _warnedLengths = new HashSet<int>();
+
+        private void WarnOutsideTrainedRange(TransitionPlayer player, float seconds)
+        {
+            int key = (int)Math.Round(seconds * player.FrameRate);
+            if (_warnedLengths.Contains(key)) return;
+            foreach (ModelCheck check in player.CheckRequest(seconds))
+            {
+                if (check.Severity != CheckSeverity.Warning) continue;
+                _warnedLengths.Add(key);
+                Debug.LogWarning($"{name}: {check.Message}; {check.Remedy}", this);
+            }
         }
 
         private void FlushShownPose()

@@ -10,8 +10,9 @@ namespace DeltaInterpolator.Samples.Transitions
     /// in-betweens into <see cref="_target"/> at <see cref="_targetTime"/>, which it reaches after
     /// <see cref="_seconds"/> (<see cref="MotionInbetweener.RequestTransition(AnimationClip, float, float)"/>).
     /// Completion is logged from <see cref="MotionInbetweener.TransitionCompleted"/>. The request is
-    /// refused (logged) while the component has no loaded model. Uses the legacy Input Manager (Project Settings →
-    /// Player → Active Input Handling: "Input Manager (Old)" or "Both").
+    /// refused (logged) while the component has no loaded model. Reads the key through the legacy Input Manager
+    /// (Project Settings → Player → Active Input Handling: "Input Manager (Old)" or "Both"); where that setting is
+    /// "Input System Package (New)" alone, UnityEngine.Input throws, so the script compiles without it and warns once.
     /// </summary>
     [RequireComponent(typeof(MotionInbetweener))]
     public sealed class TransitionOnKey : MonoBehaviour
@@ -35,6 +36,9 @@ namespace DeltaInterpolator.Samples.Transitions
         {
             _animator = GetComponent<MotionInbetweener>();
             _animator.TransitionCompleted += OnTransitionCompleted;
+#if !ENABLE_LEGACY_INPUT_MANAGER
+            Debug.LogWarning($"{name}: Transition On Key reads its key ({_key}) through the Input Manager, which this project has switched off; set Project Settings → Player → Active Input Handling to \"Both\", or call Transition() from your own input code (e.g. when Keyboard.current.spaceKey.wasPressedThisFrame).", this);
+#endif
         }
 
         private void OnDisable()
@@ -44,7 +48,15 @@ namespace DeltaInterpolator.Samples.Transitions
 
         private void Update()
         {
-            if (_animator == null || _target == null || !Input.GetKeyDown(_key)) return;
+#if ENABLE_LEGACY_INPUT_MANAGER
+            if (Input.GetKeyDown(_key)) Transition();
+#endif
+        }
+
+        /// <summary>Starts the transition (the key does this; call it from a UI button or your own input code).</summary>
+        public void Transition()
+        {
+            if (_animator == null || _target == null) return;
             try
             {
                 _lastRequest = _animator.RequestTransition(_target, _targetTime, _seconds);

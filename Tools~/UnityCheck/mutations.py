@@ -9,7 +9,7 @@ reference, an assembly that exists only under a versionDefines define used ungua
 annotation without the csc.rsp that enables it, a misplaced attribute, editor API in runtime code (player),
 Unity members the stubs lack or with wrong types, a package API that does not exist, a managed field in an
 animation job, a main-thread call inside ProcessAnimation, an unserializable [SerializeField], a menu
-path the docs name that the package does not declare.
+path the docs name that the package does not declare, internals given to a player assembly.
 
 Usage: mutations.py OUT_DIR RULES_DLL   (OUT_DIR: where unity_compile.py put its assemblies)
 """
@@ -101,6 +101,9 @@ MUTATIONS = [
                      '    internal sealed class Holder : UnityEngine.MonoBehaviour\n    {\n'
                      '        [UnityEngine.SerializeField] private System.Collections.Generic.Dictionary<string, int> table = new System.Collections.Generic.Dictionary<string, int>();\n'
                      '        public int Count => table.Count;\n    }\n}\n'), 'rule', r'^serial: .*Holder\.table'),
+    ('internals given to a runtime assembly (Runtime/Unity → DeltaInterpolator.Sentis)', 'editor', 'DeltaInterpolator.Unity',
+     lambda r: write(r, 'Runtime/Unity/Mutation.cs', '[assembly: System.Runtime.CompilerServices.InternalsVisibleTo("DeltaInterpolator.Sentis")]\n'),
+     'rule', r'^friends: DeltaInterpolator\.Unity gives its internals to DeltaInterpolator\.Sentis'),
     ('a menu the docs name but the package lacks', 'editor', 'DeltaInterpolator.Editor',
      lambda r: open(os.path.join(r, 'README.md'), 'a').write('\nOpen *Window → Animation → No Such Window*.\n'),
      'rule', r'^menu: README\.md:\d+: \*Window → Animation → No Such Window\*'),

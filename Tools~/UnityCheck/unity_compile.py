@@ -66,11 +66,13 @@ def unity_version_defines(version):
 COMMON = unity_version_defines(UNITY_VERSION) + [
     'UNITY_64', 'PLATFORM_ARCH_64', 'ENABLE_MONO', 'CSHARP_7_3_OR_NEWER', 'NET_STANDARD_2_0', 'NET_STANDARD_2_1',
     'NET_STANDARD', 'NETSTANDARD2_1', 'NETSTANDARD', 'UNITY_STANDALONE_LINUX', 'UNITY_STANDALONE',
-    'PLATFORM_STANDALONE_LINUX', 'PLATFORM_STANDALONE', 'ENABLE_LEGACY_INPUT_MANAGER']
-EDITOR = ['UNITY_EDITOR', 'UNITY_EDITOR_64', 'UNITY_EDITOR_LINUX', 'DEBUG', 'TRACE', 'UNITY_ASSERTIONS',
+    'PLATFORM_STANDALONE_LINUX', 'PLATFORM_STANDALONE']
+# Active Input Handling: the Editor configurations compile as "Input Manager (Old)", the player ones as
+# "Input System Package (New)" alone, so code on either side of #if ENABLE_LEGACY_INPUT_MANAGER compiles.
+EDITOR = ['ENABLE_LEGACY_INPUT_MANAGER','UNITY_EDITOR', 'UNITY_EDITOR_64', 'UNITY_EDITOR_LINUX', 'DEBUG', 'TRACE', 'UNITY_ASSERTIONS',
           # the package sits in the host project's `testables`, so its test assemblies compile in the Editor
           'UNITY_INCLUDE_TESTS']
-PLAYER = []
+PLAYER = ['ENABLE_INPUT_SYSTEM']
 
 CONFIGS = {
     'editor+onnxruntime': dict(editor=True, packages=dict([SENTIS, ORT])),
@@ -401,12 +403,12 @@ def plan(root, config):
         order.append(a)
     for a in selected:
         visit(a)
-    return order, problems
+    return order, problems, all_asm
 
 
 def build_config(comp, root, cname, config, outdir, stubs, nunit, verbose=False, only=None, prebuilt=None):
     """Compile one configuration; `only`: just that assembly and what it references."""
-    order, problems = plan(root, config)
+    order, problems, all_asm = plan(root, config)
     if only:
         by_name = {a.name: a for a in order}
         keep, todo = set(), [only]
@@ -464,6 +466,12 @@ def build_config(comp, root, cname, config, outdir, stubs, nunit, verbose=False,
             print('\n'.join('  ' + l for l in shown[:60]))
             if len(shown) > 60:
                 print('  ... %d more' % (len(shown) - 60))
+    # What the rules tool needs to know of each assembly of the package, compiled here or not
+    # (InternalsVisibleTo may name only tests and Editor-only assemblies).
+    with open(os.path.join(outdir, 'assemblies.json'), 'w') as f:
+        json.dump({a.name: {'editorOnly': a.get('includePlatforms', []) == ['Editor'],
+                            'test': 'UNITY_INCLUDE_TESTS' in a.get('defineConstraints', [])}
+                   for a in all_asm if not a.third_party}, f, indent=1, sort_keys=True)
     return ok, built, order
 
 

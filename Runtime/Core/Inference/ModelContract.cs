@@ -15,7 +15,7 @@ namespace DeltaInterpolator.Core.Inference
     /// <see cref="ToJson"/> (so an engine asset can keep it as a string), and checked by
     /// <see cref="ModelChecks"/>, which report every problem with a severity and a remedy. The throwing
     /// <see cref="Read(ModelDescription, ModelGraphKind)"/> refuses a model at its first error.
-    /// Python mirror: <c>Training/deltainterp/contract.py</c>.
+    /// Python mirror: <c>Training/Python~/deltainterp/contract.py</c>.
     /// </summary>
     public sealed class ModelContract
     {
@@ -301,7 +301,7 @@ namespace DeltaInterpolator.Core.Inference
         /// differs): an engine asset stores the whole graph's contract once, and each graph's backend
         /// describes itself with it.
         /// </summary>
-        internal ModelContract ForGraph(ModelGraphKind graph)
+        public ModelContract ForGraph(ModelGraphKind graph)
         {
             var copy = (ModelContract)MemberwiseClone();
             copy.Graph = graph;
@@ -368,7 +368,8 @@ namespace DeltaInterpolator.Core.Inference
             }
         }
 
-        internal static string GraphName(ModelGraphKind kind) => kind.ToString().ToLowerInvariant();
+        /// <summary>The graph's name as the contract and messages write it ("whole", "keys", "frame").</summary>
+        public static string GraphName(ModelGraphKind kind) => kind.ToString().ToLowerInvariant();
 
         /// <returns>False when no usable contract can be built (no readable skeleton).</returns>
         private bool ReadDescription(IReadOnlyDictionary<string, JsonValue> m, ModelCheckReport report)

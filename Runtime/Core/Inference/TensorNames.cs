@@ -2,7 +2,7 @@ namespace DeltaInterpolator.Core.Inference
 {
     /// <summary>
     /// Tensor names of the exported graphs (Documentation~/model-contract.md). Python mirror:
-    /// <c>Training/deltainterp/contract.py</c>. Renaming one is a contract change: bump
+    /// <c>Training/Python~/deltainterp/contract.py</c>. Renaming one is a contract change: bump
     /// <see cref="ModelContract.Version"/>.
     /// </summary>
     public static class TensorNames

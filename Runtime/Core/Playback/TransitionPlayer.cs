@@ -150,6 +150,20 @@ namespace DeltaInterpolator.Core.Playback
         public int DecodedFrames => _job?.Decoded ?? 0;
 
         /// <summary>
+        /// The model checks of a request lasting <paramref name="durationSeconds"/> from now: P past frames and
+        /// the gap it becomes at the model's frame rate, outside the ranges the model was trained on, are
+        /// warnings (it runs, but was never taught such requests); see <see cref="ModelChecks.Request"/>.
+        /// </summary>
+        public ModelCheckReport CheckRequest(double durationSeconds)
+        {
+            var report = new ModelCheckReport();
+            ModelChecks.Request(_decoder.Contract, PastFrames, MissingFramesFor(durationSeconds), report);
+            return report;
+        }
+
+        private int MissingFramesFor(double durationSeconds) => Math.Max(2, (int)Math.Round(durationSeconds * FrameRate)) - 1;
+
+        /// <summary>
         /// How much of the network's correction this frame shows over the request's SLERP pose (0: SLERP only,
         /// while the network's frames have not arrived or with <see cref="PlaybackSettings.SlerpOnly"/>; 1: the
         /// network's pose). It rises when the frames arrive as fast as keeps every joint's turn between two
@@ -179,8 +193,8 @@ namespace DeltaInterpolator.Core.Playback
             if (!(durationSeconds > 0) || double.IsInfinity(durationSeconds)) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, "expected a positive number of seconds");
             if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
             if (History.Count == 0) throw new InvalidOperationException("no frame has been recorded yet: play at least one frame before requesting a transition");
-            int gap = Math.Max(2, (int)Math.Round(durationSeconds * FrameRate));
-            int missing = gap - 1;
+            int missing = MissingFramesFor(durationSeconds);
+            int gap = missing + 1;
             ModelContract c = _decoder.Contract;
             if (PastFrames + missing > c.MaxFrameIndex)
             {

@@ -128,12 +128,12 @@ namespace DeltaInterpolator.Tests.Inference
             string? contract = null;
             while (dir != null && contract == null)
             {
-                string candidate = Path.Combine(dir, "Training", "deltainterp", "contract.py");
+                string candidate = Path.Combine(dir, "Training", "Python~", "deltainterp", "contract.py");
                 if (File.Exists(candidate)) contract = candidate;
                 dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
             }
 
-            if (contract == null) Assert.Ignore("Training/deltainterp/contract.py not found (package installed without Training/)");
+            if (contract == null) Assert.Ignore("Training/Python~/deltainterp/contract.py not found (package installed without Training/)");
             Match m = Regex.Match(File.ReadAllText(contract!), @"^CONTRACT_VERSION\s*=\s*(\d+)", RegexOptions.Multiline);
             Assert.That(m.Success, Is.True, "CONTRACT_VERSION in contract.py");
             Assert.That(int.Parse(m.Groups[1].Value), Is.EqualTo(ModelContract.Version));

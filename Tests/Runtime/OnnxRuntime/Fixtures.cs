@@ -24,7 +24,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
                 }
 
-                Assert.Fail("Tests/Fixtures/golden.json not found above " + AppContext.BaseDirectory + "; run `PYTHONPATH=Training python3 -m deltainterp fixtures --out Tests/Fixtures`");
+                Assert.Fail("Tests/Fixtures/golden.json not found above " + AppContext.BaseDirectory + "; run `PYTHONPATH=Training/Python~ python3 -m deltainterp fixtures --out Tests/Fixtures`");
                 return "";
             }
         }

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Playback;
@@ -161,6 +162,24 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             loop.Step();
             loop.AssertShows(root, rotations, 1e-12);
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
+        }
+
+        [Test]
+        public void RequestsOutsideTheTrainedGapsAreWarnedAboutBeforeTheyRun()
+        {
+            // The component logs these warnings (MotionInbetweener.WarnOutsideTrainedRange); the player owns
+            // the seconds → model frames conversion, so it answers what a request of that length becomes.
+            using var loop = new FrameLoop(60, 0, Decoding.WorkerThread, seed: 13);
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel);
+            ModelContract c = model.Contract;
+            (int nMin, int nMax) = c.TrainingMissingFrames;
+            Assume.That(c.HasTrainingRanges && nMax > 0, "the tiny model states its trained gap lengths");
+            double rate = loop.Player.FrameRate;
+            ModelCheckReport inside = loop.Player.CheckRequest((nMax + 1) / rate);
+            Assert.That(inside.CountOf(CheckSeverity.Warning) + inside.CountOf(CheckSeverity.Error), Is.EqualTo(0), string.Join("\n", inside));
+            ModelCheckReport longer = loop.Player.CheckRequest((nMax + 2) / rate);
+            Assert.That(longer.Where(x => x.Severity == CheckSeverity.Warning).Select(x => x.Message),
+                Has.Some.Contains($"a gap of {nMax + 1} frames"), string.Join("\n", longer));
         }
 
         [Test]

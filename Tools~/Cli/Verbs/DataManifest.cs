@@ -8,7 +8,7 @@ namespace DeltaInterpolator.Cli.Verbs
 {
     /// <summary>
     /// A folder of BVH files and its per-file facts: the data manifest format that the trainer's
-    /// <c>prepare</c> reads too (<c>Training/deltainterp/datasets.py</c> owns the description; this mirrors it
+    /// <c>prepare</c> reads too (<c>Training/Python~/deltainterp/datasets.py</c> owns the description; this mirrors it
     /// field for field): <c>inbetween-data.json</c> inside the folder, or a <c>NAME.json</c> whose
     /// <c>"folder"</c> names the folder relative to it; <c>defaults</c> and <c>files</c> (globs on the path
     /// relative to the folder, later matches win) with <c>from_frame</c>, <c>reference_frame</c>, <c>fps</c>,

@@ -66,7 +66,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "Bake every BVH file of folders (or data manifests) with each model and SLERP, keys every K frames, and score them:\n" +
                 "per file, per subject group (the manifest's \"groups\") and in total over every non-key frame, the mean joint position\n" +
                 "error ÷ the file's leg length and L2Q, with each method's ratio to SLERP (totals are ratios of sums over frames).\n" +
-                "Example:\n  inbetween score Training/datasets/cmu.json Training/datasets/cmu-more.json --only '02_*' '09_*' '13_*' '38_*' --every 60 \\\n" +
+                "Example:\n  inbetween score Training/Python~/datasets/cmu.json Training/Python~/datasets/cmu-more.json --only '02_*' '09_*' '13_*' '38_*' --every 60 \\\n" +
                 "      --model Runtime/Models/DeltaInterpolator-CMU.onnx --model Runtime/Models/DeltaInterpolator-LaFAN1.onnx --json out/heldout.json");
             command.Arguments.Add(_data);
             command.Options.Add(_every);

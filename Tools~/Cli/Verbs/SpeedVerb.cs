@@ -297,9 +297,9 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private static JsonObject RunPyTorch(string? root, ModelContract contract, int threads, int repeats)
         {
-            if (root == null || !File.Exists(Path.Combine(root, "Training", "deltainterp", "speed.py")))
+            if (root == null || !File.Exists(Path.Combine(root, "Training", "Python~", "deltainterp", "speed.py")))
             {
-                throw new CliErrors.UsageException("inbetween speed: --pytorch needs the repository's Training/deltainterp (speed.py); expected to run from a checkout of the package");
+                throw new CliErrors.UsageException("inbetween speed: --pytorch needs the repository's Training/Python~/deltainterp (speed.py); expected to run from a checkout of the package");
             }
 
             string python = Environment.GetEnvironmentVariable("DELTAINTERP_PYTHON") ?? "/usr/bin/python3";
@@ -320,7 +320,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     start.ArgumentList.Add(a);
                 }
 
-                start.Environment["PYTHONPATH"] = Path.Combine(root, "Training");
+                start.Environment["PYTHONPATH"] = Path.Combine(root, "Training", "Python~");
                 using Process? process = Process.Start(start);
                 if (process == null) throw new CliErrors.UsageException($"inbetween speed: could not start {python}; expected Python 3 with torch (set DELTAINTERP_PYTHON)");
                 string stderr = process.StandardError.ReadToEnd();

@@ -17,7 +17,9 @@ using System.Text.RegularExpressions;
 //   menu     every menu path the docs name (*Add Component → …*, *Assets → Create → …*, *Window → …*)
 //            exists as an AddComponentMenu/CreateAssetMenu/MenuItem attribute (or, for Add Component, as
 //            the nicified name of a MonoBehaviour);
-//   package  package.json's documentationUrl/changelogUrl/licensesUrl are absolute http(s) links or absent.
+//   package  package.json's documentationUrl/changelogUrl/licensesUrl are absolute http(s) links or absent;
+//   friends  [InternalsVisibleTo] of a package assembly names only test assemblies and Editor-only ones
+//            (assemblies.json, written by unity_compile.py beside the assemblies, says which is which).
 // Usage: DeltaInterpolator.UnityRules ASSEMBLY_DIR STUB_DIR PACKAGE_ROOT [DOC.md ...]
 // Prints one line per violation; exit 1 when there is any.
 static class Program
@@ -50,6 +52,7 @@ static class Program
         // Menu items live in the Editor assembly: a player configuration has none to hold the docs against.
         if (package.Any(a => a.GetName().Name == "DeltaInterpolator.Editor")) CheckMenus(types, args.Skip(3).ToList(), root);
         CheckPackageJson(root);
+        CheckFriends(package, dir);
         foreach (var v in Violations) Console.WriteLine(v);
         Console.WriteLine($"unity-rules: {package.Count} assemblies, {types.Count} types, {Violations.Count} violation(s)");
         return Violations.Count == 0 ? 0 : 1;
@@ -286,6 +289,22 @@ static class Program
         foreach (var key in new[] { "documentationUrl", "changelogUrl", "licensesUrl" })
             if (doc.RootElement.TryGetProperty(key, out var v) && !Regex.IsMatch(v.GetString() ?? "", "^https?://"))
                 Violations.Add($"package: package.json {key} is \"{v.GetString()}\": the Package Manager opens it as a web link, so it must be an absolute http(s) URL or absent");
+    }
+
+    // ---- friends -------------------------------------------------------------------------------------
+    static void CheckFriends(List<Assembly> package, string dir)
+    {
+        var path = Path.Combine(dir, "assemblies.json");
+        if (!File.Exists(path)) return;
+        using var doc = JsonDocument.Parse(File.ReadAllText(path));
+        foreach (var a in package)
+            foreach (var attr in a.CustomAttributes.Where(c => c.AttributeType.FullName == "System.Runtime.CompilerServices.InternalsVisibleToAttribute"))
+            {
+                var friend = ((string)attr.ConstructorArguments[0].Value!).Split(',')[0].Trim();
+                bool ok = doc.RootElement.TryGetProperty(friend, out var info)
+                          && (info.GetProperty("test").GetBoolean() || info.GetProperty("editorOnly").GetBoolean());
+                if (!ok) Violations.Add($"friends: {a.GetName().Name} gives its internals to {friend}, which is neither a test assembly nor an Editor-only assembly of this configuration");
+            }
     }
 
     static string Name(Type t) => t.IsGenericType

@@ -6,5 +6,7 @@ namespace UnityEngine
         public static void Log(object message) => throw null!;
 
         public static void LogError(object message, Object context) => throw null!;
+
+        public static void LogWarning(object message, Object context) => throw null!;
     }
 }

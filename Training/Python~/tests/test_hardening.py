@@ -202,7 +202,7 @@ def test_the_new_format_loads_with_torch_weights_only(tiny_checkpoint):
 
 
 def test_the_committed_fixture_checkpoint_loads():
-    fixture = Path(__file__).resolve().parents[2] / "Tests" / "Fixtures" / "tiny-model.pt"
+    fixture = Path(__file__).resolve().parents[3] / "Tests" / "Fixtures" / "tiny-model.pt"
     loaded = load_checkpoint(fixture)
     assert loaded.config.joints == 22 and loaded.unit_scale == pytest.approx(0.01)
 

@@ -19,7 +19,7 @@ from deltainterp.fixtures import checkpoint_state, write_fixtures
 from deltainterp.onnx_reference import run_model
 from deltainterp.operators import ALLOWED, OperatorError, check_operators
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 FIXTURES = REPO / "Tests" / "Fixtures"
 CSHARP_CONTRACT = REPO / "Runtime" / "Core" / "Inference" / "ModelContract.cs"
 
@@ -152,7 +152,7 @@ def test_fixtures_are_deterministic_and_up_to_date(tmp_path):
         pytest.skip("Tests/Fixtures has not been written yet")
     for key, path in a.items():
         committed = FIXTURES / path.name
-        stale = f"{committed} is stale: run `PYTHONPATH=Training python3 -m deltainterp fixtures`"
+        stale = f"{committed} is stale: run `PYTHONPATH=Training/Python~ python3 -m deltainterp fixtures`"
         if path.suffix == ".json":
             # Network outputs in float32 differ in their last digits between CPUs (OpenBLAS picks its
             # kernels per CPU model), so golden numbers are compared to 1e-5 (the export check's tolerance; relative above 1), everything else

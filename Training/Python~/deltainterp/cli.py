@@ -28,8 +28,8 @@ def _prepare(sub) -> None:
                                    "A single LaFAN1 folder (<theme><take>_subject<k>.bvh beside train_stats_official.json, "
                                    "no manifest,\nno --holdout) is packed as before: subjects 1-4, the statistics "
                                    "file's offsets.\n\nExample (the shipped CMU model's data, subjects 02, 09, 13 and 38 "
-                                   "held out):\n  PYTHONPATH=Training python3 -m deltainterp prepare --data "
-                                   "Training/datasets/cmu.json Training/datasets/cmu-more.json \\\n"
+                                   "held out):\n  PYTHONPATH=Training/Python~ python3 -m deltainterp prepare --data "
+                                   "Training/Python~/datasets/cmu.json Training/Python~/datasets/cmu-more.json \\\n"
                                    "      --holdout '02_*' '09_*' '13_*' '38_*' --out Training/.data/cmu-train.npz")
     p.add_argument("--data", nargs="+", default=[DEFAULT_DATA],
                    help=f"folders of .bvh files or data manifests (default {DEFAULT_DATA})")
@@ -120,7 +120,7 @@ def _train(sub) -> None:
                                    "file) as the run goes, without --force. OUT must be new, empty or a run "
                                    "folder; resuming refuses other settings or another architecture (naming "
                                    "the difference) and warns about another --steps. Example (after `prepare`): "
-                                   "PYTHONPATH=Training python3 -m deltainterp train --preset tiny --steps 20 "
+                                   "PYTHONPATH=Training/Python~ python3 -m deltainterp train --preset tiny --steps 20 "
                                    "--out Training/runs/try")
     p.add_argument("--data", default=DEFAULT_PACK, help="pack written by `prepare`")
     p.add_argument("--out", default="Training/runs/runtime", help="run folder (checkpoint, logs, plots)")
@@ -179,7 +179,7 @@ def _evaluate_export_fixtures(sub) -> None:
                     "turned to face +X at frame 9,\n10 past frames, a transition of n frames, the target at "
                     "frame 10+n; L2Q, L2P (normalised\nwith --stats) and NPSS over the missing frames.\n\n"
                     "Without --checkpoint it scores the two baselines; with it, a 'model' row as well.\n"
-                    "Example:\n  PYTHONPATH=Training python3 -m deltainterp evaluate "
+                    "Example:\n  PYTHONPATH=Training/Python~ python3 -m deltainterp evaluate "
                     "--checkpoint Training/runs/runtime/checkpoint.pt --json out/benchmark.json")
     p.add_argument("--data", default=DEFAULT_DATA, help=f"folder of LaFAN1 .bvh files (default {DEFAULT_DATA})")
     p.add_argument("--stats", default=DEFAULT_STATS,
@@ -210,10 +210,10 @@ def _evaluate_export_fixtures(sub) -> None:
                     "metadata\n(Documentation~/model-contract.md). Fails when a graph holds an operator that "
                     "Sentis 2.x or\nBarracuda cannot import (deltainterp/operators.py), or when the numpy "
                     "evaluation of a written\ngraph differs from torch by more than 1e-5.\n"
-                    "Example:\n  PYTHONPATH=Training python3 -m deltainterp export "
+                    "Example:\n  PYTHONPATH=Training/Python~ python3 -m deltainterp export "
                     "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx\n"
                     "Re-export a shipped model in the current contract (weights read back from its whole graph):\n"
-                    "  PYTHONPATH=Training python3 -m deltainterp export --checkpoint "
+                    "  PYTHONPATH=Training/Python~ python3 -m deltainterp export --checkpoint "
                     "Runtime/Models/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
     p.add_argument("--checkpoint", required=True,
                    help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")

@@ -1,6 +1,6 @@
 """Times the PyTorch eager reference of one in-betweening request, for `inbetween speed --pytorch`.
 
-    PYTHONPATH=Training python3 -m deltainterp.speed --config META.json --threads N --json OUT
+    PYTHONPATH=Training/Python~ python3 -m deltainterp.speed --config META.json --threads N --json OUT
 
 META.json is the `deltainterp` metadata object of an exported model (Documentation~/model-contract.md):
 its architecture, skeleton, unit scale and delta modes rebuild the same network in PyTorch. The weights

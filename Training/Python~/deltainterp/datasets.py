@@ -43,7 +43,7 @@ import numpy as np
 
 MANIFEST_NAME = "inbetween-data.json"
 FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip"}
-REPO_ROOT = Path(__file__).resolve().parents[2]
+REPO_ROOT = Path(__file__).resolve().parents[3]  # Training/Python~/deltainterp/datasets.py
 MAX_MANIFEST_BYTES = 1 << 20
 
 

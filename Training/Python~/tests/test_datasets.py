@@ -10,7 +10,7 @@ import pytest
 from deltainterp.cli import main
 from deltainterp.datasets import open_source, plan_files
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 
 
 def _folder(tmp_path: Path, manifest: dict | None = None) -> Path:
@@ -70,7 +70,7 @@ def test_bad_manifests_are_refused_naming_the_file(tmp_path, manifest, phrase):
 
 def test_the_repository_manifests_read(tmp_path):
     for name in ("cmu.json", "cmu-more.json"):
-        path = REPO / "Training" / "datasets" / name
+        path = REPO / "Training" / "Python~" / "datasets" / name
         try:
             source = open_source(str(path))
         except ValueError as e:

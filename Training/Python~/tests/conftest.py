@@ -9,7 +9,7 @@ import pytest
 import torch
 
 TRAINING = Path(__file__).resolve().parents[1]
-REPO = TRAINING.parent
+REPO = TRAINING.parents[1]  # Training/Python~ -> the repository
 sys.path.insert(0, str(TRAINING))
 
 torch.set_num_threads(1)
