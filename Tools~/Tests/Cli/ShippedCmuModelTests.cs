@@ -52,7 +52,7 @@ namespace DeltaInterpolator.Tests.Cli
             RetargetFixtures.RequireCmu();
             if (!Directory.Exists(Path.Combine(Root, "..", "shared", "data", "cmu-more"))) Assert.Ignore("../shared/data/cmu-more is absent; skipping the held-out scores");
             string json = Path.Combine(_dir, "heldout.json");
-            CliRun run = CliHarness.Run("score", Path.Combine(Root, "Training", "datasets", "cmu.json"), Path.Combine(Root, "Training", "datasets", "cmu-more.json"),
+            CliRun run = CliHarness.Run("score", Path.Combine(Root, "Training", "Python~", "datasets", "cmu.json"), Path.Combine(Root, "Training", "Python~", "datasets", "cmu-more.json"),
                 "--only", "02_*", "09_*", "13_*", "38_*", "--every", every.ToString(CultureInfo.InvariantCulture), "--json", json);
             CliHarness.AssertSuccess(run);
             using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(json));
