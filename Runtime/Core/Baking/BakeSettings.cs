@@ -39,6 +39,13 @@ namespace DeltaInterpolator.Core.Baking
         /// <summary>Gap lengths the model was trained on, or null when any length is fine.</summary>
         public (int Min, int Max)? TrainedMissingFrames { get; set; }
 
+        /// <summary>
+        /// Foot locking applied to the filled frames once every gap is baked (<see cref="Feet.FootLocker"/>: planted
+        /// feet held, key frames untouched), or null (the default) for none. The clip must have the model's leg
+        /// joints (LaFAN1 names).
+        /// </summary>
+        public Feet.FootLockSettings? FootLocking { get; set; }
+
         /// <summary>Name used in warnings and refusals, e.g. the model file.</summary>
         public string Name { get; set; } = "the in-betweener";
 

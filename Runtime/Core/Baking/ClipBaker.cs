@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -23,6 +24,8 @@ namespace DeltaInterpolator.Core.Baking
     /// increasing or repeated, and a gap the graph cannot take even with one past key (1 + n beyond the
     /// largest frame index). When a gap fits only with fewer past keys than wanted, fewer are fed. Gaps
     /// outside the trained ranges are baked and named in <see cref="BakePlan.Warnings"/>.</para>
+    /// <para>With <see cref="BakeSettings.FootLocking"/> the filled frames are then foot-locked
+    /// (<see cref="FootLocker"/>): planted feet held still, key frames untouched.</para>
     /// <para>Buffers (one <see cref="Transition"/> per request shape, the root track) are reused across
     /// gaps and bakes. Not thread-safe.</para>
     /// </remarks>
@@ -31,6 +34,8 @@ namespace DeltaInterpolator.Core.Baking
         private readonly Dictionary<long, Transition> _transitions = new Dictionary<long, Transition>();
         private Skeleton? _transitionSkeleton;
         private double[] _root = Array.Empty<double>();
+        private FootLocker? _locker;
+        private int[] _relativeKeys = Array.Empty<int>();
 
         /// <summary>Creates a baker over <paramref name="inbetweener"/> (not owned: the caller disposes it).</summary>
         public ClipBaker(IInbetweener inbetweener, BakeSettings settings)
@@ -233,6 +238,32 @@ namespace DeltaInterpolator.Core.Baking
                 done++;
                 progress?.Report(done);
             }
+
+            if (Settings.FootLocking != null) LockFeet(destination, plan);
+        }
+
+        /// <summary>Holds planted feet still on the filled frames (<see cref="BakeSettings.FootLocking"/>); keys stay as they are.</summary>
+        private void LockFeet(MotionClip clip, BakePlan plan)
+        {
+            if (_locker == null || !ReferenceEquals(_locker.Rig.Skeleton, clip.Skeleton) && !_locker.Rig.Skeleton.HasSameHierarchy(clip.Skeleton))
+            {
+                FootRig rig;
+                try
+                {
+                    rig = FootRig.ForModel(clip.Skeleton);
+                }
+                catch (ArgumentException e)
+                {
+                    throw new InvalidOperationException($"foot locking: {e.Message}; bake without foot locking (BakeSettings.FootLocking = null) for a skeleton without them", e);
+                }
+
+                _locker = new FootLocker(rig, Settings.FootLocking);
+            }
+
+            int[] keys = plan.KeyArray;
+            if (_relativeKeys.Length != keys.Length) _relativeKeys = new int[keys.Length];
+            for (int i = 0; i < keys.Length; i++) _relativeKeys[i] = keys[i] - plan.FirstKey;
+            _locker.Lock(clip, _relativeKeys);
         }
 
         private Transition TransitionFor(Skeleton skeleton, int past, int missing)

@@ -10,7 +10,8 @@ namespace DeltaInterpolator.Cli.Verbs
 {
     /// <summary>
     /// <c>bake --json</c>: one file's scores per method, in the units users compare across files and rigs
-    /// (mean joint position error in file units and ÷ the file's leg length, L2Q, L2P where statistics apply)
+    /// (mean joint position error in file units and ÷ the file's leg length, L2Q, L2P where statistics apply,
+    /// foot skating in leg lengths per second beside the ground truth's own)
     /// with the non-key frame count, so sums over files weight every non-key frame equally (what
     /// <c>score</c> adds up).
     /// </summary>
@@ -20,7 +21,7 @@ namespace DeltaInterpolator.Cli.Verbs
         public const int Version = 1;
 
         public static string Json(string input, BvhAnimation animation, int[] inputKeys, BakeOutcome outcome, ModelContract contract, string modelPath,
-            BakeAccuracy model, BakeAccuracy slerp)
+            BakeAccuracy model, BakeAccuracy slerp, BakeFeet.Scores skating, bool feetLocked)
         {
             double leg = BakeInput.LegLength(outcome.Seam, contract, animation);
             using var buffer = new MemoryStream();
@@ -37,9 +38,12 @@ namespace DeltaInterpolator.Cli.Verbs
                 w.WriteNumber("non_key_frames", model.Frames);
                 w.WriteNumber("leg_length", leg);
                 w.WriteString("retargeting", outcome.Seam.Description);
+                w.WriteString("feet", feetLocked ? "lock" : "off");
+                w.WriteNumber("foot_contact_samples", skating.Truth.ContactSamples);
+                Skating(w, "ground_truth_foot_skating", skating.Truth);
                 w.WriteStartObject("methods");
-                Method(w, "model", contract.Name, modelPath, model, leg, outcome.ModelSeconds);
-                Method(w, "slerp", "SLERP", null, slerp, leg, outcome.SlerpSeconds);
+                Method(w, "model", contract.Name, modelPath, model, leg, outcome.ModelSeconds, skating.Model);
+                Method(w, "slerp", "SLERP", null, slerp, leg, outcome.SlerpSeconds, skating.Slerp);
                 w.WriteEndObject();
                 w.WriteEndObject();
             }
@@ -47,7 +51,14 @@ namespace DeltaInterpolator.Cli.Verbs
             return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
         }
 
-        private static void Method(Utf8JsonWriter w, string key, string name, string? path, BakeAccuracy a, double leg, double seconds)
+        /// <summary>Foot skating in leg lengths per second, or null where the truth has no planted foot on a filled frame.</summary>
+        private static void Skating(Utf8JsonWriter w, string key, FootSkating s)
+        {
+            if (double.IsFinite(s.MeanSpeed)) w.WriteNumber(key, s.MeanSpeed);
+            else w.WriteNull(key);
+        }
+
+        private static void Method(Utf8JsonWriter w, string key, string name, string? path, BakeAccuracy a, double leg, double seconds, FootSkating skating)
         {
             if (!double.IsFinite(a.MeanPositionError) || !double.IsFinite(a.L2Q))
             {
@@ -62,6 +73,7 @@ namespace DeltaInterpolator.Cli.Verbs
             w.WriteNumber("l2q", a.L2Q);
             if (double.IsFinite(a.L2P)) w.WriteNumber("l2p", a.L2P);
             else w.WriteNull("l2p");
+            Skating(w, "foot_skating", skating);
             w.WriteNumber("seconds", seconds);
             w.WriteEndObject();
         }

@@ -9,6 +9,7 @@ using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.Evaluation.Benchmark;
 using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
@@ -107,6 +108,13 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "K",
         };
 
+        private readonly Option<string> _feet = new Option<string>("--feet")
+        {
+            Description = "Foot locking of both methods' filled frames before they are mapped back: 'lock' holds planted feet still (two-bone IK, key frames untouched), 'off' leaves them as filled. Foot skating is reported either way.",
+            HelpName = "lock|off",
+            DefaultValueFactory = _ => "lock",
+        };
+
         private readonly Option<string?> _json = new Option<string?>("--json")
         {
             Description = "Also write each method's scores as JSON: mean joint position error (file units and ÷ leg length), L2Q, L2P, non-key frames (what 'score' adds up over folders).",
@@ -169,6 +177,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_map);
             command.Options.Add(_inputFps);
             command.Options.Add(_fromFrame);
+            command.Options.Add(_feet);
             command.Options.Add(_json);
             command.Options.Add(_preview);
             command.Options.Add(_png);
@@ -189,6 +198,7 @@ namespace DeltaInterpolator.Cli.Verbs
             bool force = parse.GetValue(_output.Force);
             int threads = parse.GetValue(_threads);
             ShortContextPolicy? policy = ParsePolicy(parse.GetValue(_pastPolicy)!);
+            FootLockSettings? feet = BakeFeet.Parse(parse.GetValue(_feet)!);
 
             if ((keysText == null) == (every == null))
             {
@@ -248,7 +258,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 ? BakeInput.CheckFrom(ParseKeys(keysText, input), fromFrame, input)
                 : BakeInput.Every(every!.Value, animation.Motion, fromFrame, model.Contract, input);
 
-            BakeOutcome outcome = BakeBoth(animation, input, inputKeys, model, policy, context == "filled", parse.GetValue(_referenceFrame), jointMap);
+            BakeOutcome outcome = BakeBoth(animation, input, inputKeys, model, policy, context == "filled", parse.GetValue(_referenceFrame), jointMap, feet: feet);
             MotionClip modelOut = outcome.ModelOut, slerpOut = outcome.SlerpOut;
             // Before OUT.bvh, the scores or the preview: a NaN or overflow is refused, never written or drawn.
             MotionChecks.RequireFinitePositions(modelOut, input, "the model's result");
@@ -267,11 +277,12 @@ namespace DeltaInterpolator.Cli.Verbs
             double[]? std = statistics?.StandardDeviation;
             BakeAccuracy modelScore = BakeAccuracy.Measure(animation.Motion, modelOut, inputKeys, std);
             BakeAccuracy slerpScore = BakeAccuracy.Measure(animation.Motion, slerpOut, inputKeys, std);
+            BakeFeet.Scores skating = BakeFeet.Measure(animation, inputKeys, outcome);
             PrintSummary(input, animation, inputKeys, modelPlan, outcome.ModelSettings, model.Contract, outcome.Seam, outPath, method,
-                modelScore, slerpScore, statistics, outcome.ModelSeconds, outcome.SlerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds);
+                modelScore, slerpScore, statistics, outcome.ModelSeconds, outcome.SlerpSeconds, readSeconds, loadSeconds, total.Elapsed.TotalSeconds, skating, feet != null);
             if (jsonFull != null)
             {
-                string json = BakeReport.Json(input, animation, inputKeys, outcome, model.Contract, modelPath, modelScore, slerpScore);
+                string json = BakeReport.Json(input, animation, inputKeys, outcome, model.Contract, modelPath, modelScore, slerpScore, skating, feet != null);
                 OutputFile.Write(jsonFull, stream =>
                 {
                     using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
@@ -292,7 +303,7 @@ namespace DeltaInterpolator.Cli.Verbs
         /// back on the input's. Same-skeleton inputs at the model's rate go straight in; any other humanoid
         /// is retargeted (<see cref="SkeletonRetargeting"/>). Progress of the model's gaps on stderr.
         /// </summary>
-        internal static BakeOutcome BakeBoth(BvhAnimation animation, string input, int[] inputKeys, Inbetweener model, ShortContextPolicy? policy, bool filledContext, int? referenceFrame, JointMap? map = null, bool quiet = false)
+        internal static BakeOutcome BakeBoth(BvhAnimation animation, string input, int[] inputKeys, Inbetweener model, ShortContextPolicy? policy, bool filledContext, int? referenceFrame, JointMap? map = null, bool quiet = false, FootLockSettings? feet = null)
         {
             IBakeRetargeting seam = ChooseSeam(model.Contract, animation, input, referenceFrame, map);
             MotionClip source = seam.ToModel(animation, inputKeys);
@@ -300,8 +311,10 @@ namespace DeltaInterpolator.Cli.Verbs
 
             BakeSettings modelSettings = BakeSettings.ForModel(model.Contract, policy);
             modelSettings.FilledFramesAsContext = filledContext;
+            // Feet are locked on the model's skeleton, before the results are mapped back (both methods alike).
+            modelSettings.FootLocking = feet;
             var modelBaker = new ClipBaker(model, modelSettings);
-            var slerpBaker = new ClipBaker(new SlerpBaseline(), BakeSettings.ForBaseline("SLERP"));
+            var slerpBaker = new ClipBaker(new SlerpBaseline(), new BakeSettings { Name = "SLERP", FootLocking = feet });
             BakePlan modelPlan = Plan(modelBaker, source.FrameCount, modelKeys, input);
             BakePlan slerpPlan = Plan(slerpBaker, source.FrameCount, modelKeys, input);
 
@@ -457,7 +470,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private static void PrintSummary(
             string input, BvhAnimation animation, int[] keys, BakePlan plan, BakeSettings settings, ModelContract contract, IBakeRetargeting seam,
             string outPath, string method, BakeAccuracy model, BakeAccuracy slerp, BenchmarkStatistics? statistics,
-            double modelSeconds, double slerpSeconds, double readSeconds, double loadSeconds, double totalSeconds)
+            double modelSeconds, double slerpSeconds, double readSeconds, double loadSeconds, double totalSeconds, BakeFeet.Scores skating, bool locked)
         {
             foreach (string warning in plan.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(warning));
             MotionClip motion = animation.Motion;
@@ -468,10 +481,15 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddColumn(new TableColumn($"Mean joint position error ({unit})").RightAligned());
             table.AddColumn(new TableColumn("L2Q").RightAligned());
             table.AddColumn(new TableColumn(statistics != null ? "L2P" : "L2P (no statistics)").RightAligned());
+            table.AddColumn(new TableColumn("Foot skating (leg/s)").RightAligned());
             table.AddColumn(new TableColumn("Bake time (s)").RightAligned());
-            AddRow(table, "Model (" + Path.GetFileNameWithoutExtension(contract.Source) + ")", model, modelSeconds);
-            AddRow(table, "SLERP", slerp, slerpSeconds);
+            AddRow(table, "Model (" + Path.GetFileNameWithoutExtension(contract.Source) + ")", model, modelSeconds, skating.Model);
+            AddRow(table, "SLERP", slerp, slerpSeconds, skating.Slerp);
+            table.AddRow("Ground truth", "-", "-", "-", BakeFeet.Format(skating.Truth), "-");
             AnsiConsole.Write(table);
+            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
+                "feet: {0}; foot skating: mean horizontal speed of ankles and toes on the {1:N0} (frame, joint) pairs where the ground truth's are planted (within 3 % of a leg of the ground, under 15 % of a leg per second), in leg lengths per second",
+                locked ? "locked (--feet lock: planted feet held still on the filled frames, keys untouched)" : "not locked (--feet off)", skating.Truth.ContactSamples)));
 
             string policy = settings.ShortContext == ShortContextPolicy.RepeatEarliest ? "repeat the earliest" : "feed what exists";
             string trained = settings.TrainedPastFrames is { } p ? $"trained on {p.Min}..{p.Max} past frames" : "trained past range unknown";
@@ -491,13 +509,14 @@ namespace DeltaInterpolator.Cli.Verbs
         internal static string KeyLine(SkeletonRetargeting retargeted) => string.Format(CultureInfo.InvariantCulture,
             "key frames: the input's, copied exactly (mapping them to the model's skeleton and back came within {0:0.###e+0}° of them)", retargeted.KeyRoundTripDegrees);
 
-        private static void AddRow(Table table, string name, BakeAccuracy a, double seconds)
+        private static void AddRow(Table table, string name, BakeAccuracy a, double seconds, FootSkating skating)
         {
             table.AddRow(
                 Markup.Escape(name),
                 a.MeanPositionError.ToString("0.000", CultureInfo.InvariantCulture),
                 a.L2Q.ToString("0.0000", CultureInfo.InvariantCulture),
                 double.IsNaN(a.L2P) ? "-" : a.L2P.ToString("0.0000", CultureInfo.InvariantCulture),
+                BakeFeet.Format(skating),
                 seconds.ToString("0.000", CultureInfo.InvariantCulture));
         }
 
