@@ -13,26 +13,36 @@ namespace DeltaInterpolator.Core.Feet
     /// every contact. Key frames are never changed.
     /// </summary>
     /// <remarks>
-    /// <para><b>Ground.</b> At each key the ground is the lowest foot joint's height; a key whose ground lies
-    /// above the mean of its neighbours' (a jump or a run's flight) takes that mean instead. Between keys it
-    /// is interpolated linearly, so slopes and steps are followed key by key. Each foot joint's planted height
-    /// is its own: the 10th percentile over the keys of its height above the ground, capped at its height in
-    /// the rig's flat-footed stance (an ankle stands a few centimetres up, a toe on the ground), so that a foot
-    /// that never touches down is never planted in the air.</para>
-    /// <para><b>Contacts.</b> Per foot joint, with hysteresis (<see cref="FootLockSettings"/>): planted below
-    /// the entry height and speed, released above the exit height or speed; contacts shorter than
-    /// <see cref="FootLockSettings.MinContactSeconds"/> are dropped.</para>
-    /// <para><b>Where a planted joint is held.</b> A contact that spans key frames holds the joint where the
-    /// keys have it (interpolated linearly from key to key, so it meets every key exactly); any other contact
-    /// holds it at its mean position over the contact, its height kept within 1 % of a leg length of its planted
-    /// height above the ground there. A contact whose target the leg cannot reach (farther from the hip than
-    /// <see cref="FootLockSettings.MaxReach"/> of thigh + shin) is cut there: the foot is released, not
-    /// stretched.</para>
-    /// <para><b>Solving a leg.</b> Heel planted: the ankle goes to its target, the foot keeps its global
-    /// orientation (and, when the toe is planted too, turns about the ankle to point at the toe's target).
-    /// Toe only (a rolling foot): the ankle goes where the kept foot orientation puts the toe on its target.
-    /// The knee stays in the leg's plane; only the thigh, knee and foot rotations of non-key frames change.
-    /// A rig whose toe was synthesized (rigid to the foot) is handled the same way.</para>
+    /// <para><b>Ground.</b> At each key the ground is where its lowest foot joint stands — lowest measured along
+    /// the slope the neighbouring keys show, so that on a slope a foot swinging behind is not taken for the one
+    /// planted ahead; a key whose ground lies above the mean of its neighbours' (a jump, a run's flight) takes that
+    /// mean. Under a foot between two keys the ground is on the line through their ground points (slopes and steps
+    /// followed key by key), or interpolated in time when those points are close together. Each foot joint's
+    /// planted height is its own: the 10th percentile over the keys of its height above the ground, at most its
+    /// height in the rig's flat-footed stance plus 1 % of a leg (an ankle stands a few centimetres up, a toe on
+    /// the ground), so that a joint the keys never show on the ground is never planted in the air.</para>
+    /// <para><b>Contacts from the keys.</b> A key whose joint is within <see cref="FootLockSettings.EnterHeight"/>
+    /// of its planted height plants it; the contact carries on into the gaps beside the key while the filled
+    /// motion keeps the joint below <see cref="FootLockSettings.ExitHeight"/> and within
+    /// <see cref="FootLockSettings.HoldDistance"/> of the key's spot. Two keys that plant it within
+    /// <see cref="FootLockSettings.BridgeDistance"/> of each other make one contact across the gap unless the
+    /// filled motion lifts it above <see cref="FootLockSettings.StepHeight"/>.</para>
+    /// <para><b>Contacts from the filled motion</b> (where no key vouches): hysteresis on height and speed
+    /// (<see cref="NextPlanted"/>), at least <see cref="FootLockSettings.MinContactSeconds"/> long. Two different
+    /// contacts of a joint are kept at least the ease apart, so that it moves from one spot to the next.</para>
+    /// <para><b>Where a planted joint is held.</b> A contact through key frames holds the joint where the keys
+    /// have it (linearly from key to key, so it meets every key exactly); any other contact holds it at its mean
+    /// position over the contact, within 1 % of a leg length of its planted height above the ground there. A
+    /// contact frame whose target the leg cannot reach (farther from the hip than
+    /// <see cref="FootLockSettings.MaxReach"/> of thigh + shin, and farther than the filled motion already
+    /// stretches it) is dropped: the foot is released, not stretched. Weights ease from 0 to 1 over
+    /// <see cref="FootLockSettings.EaseSeconds"/> before a contact and back after it, never across a key.</para>
+    /// <para><b>Solving a leg.</b> Heel (ankle) held: the ankle goes to its target, the foot keeps its global
+    /// orientation. Toe held, heel free (a rolling foot): the foot keeps its orientation and is carried so that
+    /// the toe lands on its target. Both held: the foot lies on the line from the heel's to the toe's target, the
+    /// more held of the two exact (the toe on a tie). Then analytic two-bone IK (<see cref="TwoBoneIk"/>) with the
+    /// knee in the leg's plane; only the thigh, knee and foot rotations of non-key frames change, so a rig whose
+    /// toe was synthesized (rigid to the foot) is handled the same way.</para>
     /// <para>Buffers grow to the longest clip seen and are reused; <see cref="LockFrame"/> allocates nothing.
     /// Not thread-safe.</para>
     /// </remarks>

@@ -1,0 +1,113 @@
+using System;
+using BenchmarkDotNet.Attributes;
+using DeltaInterpolator.Core.Feet;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Benchmarks
+{
+    /// <summary>
+    /// The per-frame cost of foot locking (<see cref="FootLocker.LockFrame"/>) for 1, 16 and 64 characters of
+    /// LaFAN1's 22 joints, every character with both feet planted on every frame (the costliest case: FK of
+    /// the frame and two-bone IK of both legs, toe and heel held). Divide by Characters for the per-character
+    /// cost; it must allocate 0 B. Planning (once per transition or bake) is not part of it.
+    /// <code>dotnet run -c Release --project Tools~/Benchmarks -- --filter '*FootLockBenchmarks*'</code>
+    /// </summary>
+    [MemoryDiagnoser]
+    public class FootLockBenchmarks
+    {
+        private const int Frames = 60;
+        private FootLocker[] _lockers = null!;
+        private MotionClip[] _clips = null!;
+        private double[][] _rotations = null!;
+        private int _frame;
+
+        /// <summary>Characters locked per rendered frame.</summary>
+        [Params(1, 16, 64)]
+        public int Characters { get; set; }
+
+        [GlobalSetup]
+        public void Setup()
+        {
+            string[] names =
+            {
+                "Hips", "LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToe", "RightUpLeg", "RightLeg", "RightFoot", "RightToe",
+                "Spine", "Spine1", "Spine2", "Neck", "Head", "LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand",
+                "RightShoulder", "RightArm", "RightForeArm", "RightHand",
+            };
+            int[] parents = { -1, 0, 1, 2, 3, 0, 5, 6, 7, 0, 9, 10, 11, 12, 11, 14, 15, 16, 11, 18, 19, 20 };
+            double[] offsets =
+            {
+                0, 0, 0, 0.1, 1.86, 10.55, 43.5, 0, 0, 42.37, 0, 0, 17.3, 0, 0, 0.1, 1.86, -10.55, 43.5, 0, 0, 42.37, 0, 0, 17.3, 0, 0,
+                6.9, -2.6, 0, 12.59, 0, 0, 12.34, 0, 0, 25.83, 0, 0, 11.77, 0, 0, 19.75, -1.48, 6.0, 11.28, 0, 0, 33.0, 0, 0, 25.2, 0, 0,
+                19.75, -1.48, -6.0, 11.28, 0, 0, 33.0, 0, 0, 25.2, 0, 0,
+            };
+            var skeleton = new Skeleton(names, parents, offsets);
+            FootRig rig = FootRig.ForModel(skeleton);
+            ReferencePose pose = ReferencePose.ModelTPose(skeleton);
+            int j = skeleton.JointCount;
+            var gp = new double[3 * j];
+            var gr = new double[4 * j];
+            _lockers = new FootLocker[Characters];
+            _clips = new MotionClip[Characters];
+            _rotations = new double[Characters][];
+            for (int c = 0; c < Characters; c++)
+            {
+                // Standing, hips 6 cm down and swaying a few centimetres, the feet drifting half as far between the two
+                // keys: every filled frame holds both feet (heel and toe) and solves both legs.
+                var positions = new double[Frames * j * 3];
+                var rotations = new double[Frames * j * 4];
+                for (int f = 0; f < Frames; f++)
+                {
+                    skeleton.OffsetSpan.CopyTo(positions.AsSpan(f * j * 3, j * 3));
+                    double sway = 3 * Math.Sin(Math.PI * f / (Frames - 1)) * (1 + 0.01 * c);
+                    new Vector3D(pose.RootPosition.X + sway, pose.RootPosition.Y - 6, pose.RootPosition.Z).Write(positions, f * j * 3);
+                    for (int k = 0; k < 4 * j; k++) rotations[f * j * 4 + k] = pose.LocalRotations[k];
+                    // Knees bent so that the ankles stand where the T-pose has them, carried half the sway along.
+                    Span<double> lp = positions.AsSpan(f * j * 3, j * 3), lr = rotations.AsSpan(f * j * 4, j * 4);
+                    ForwardKinematics.ComputeFrame(skeleton.ParentSpan, lp, Vector3D.Read(lp, 0), lr, gp, gr);
+                    for (int side = 0; side < 2; side++)
+                    {
+                        Leg leg = rig[side];
+                        Vector3D ankle = pose.GlobalPosition(leg.Ankle) + new Vector3D(0.5 * sway, 0, 0);
+                        TwoBoneIk.Solve(Vector3D.Read(gp, 3 * leg.Hip), Vector3D.Read(gp, 3 * leg.Knee), Vector3D.Read(gp, 3 * leg.Ankle),
+                            QuaternionD.Read(gr, 4 * leg.Hip), QuaternionD.Read(gr, 4 * leg.Knee), ankle, Vector3D.UnitZ, out QuaternionD hip, out QuaternionD knee);
+                        Quaternions.Multiply(Quaternions.Conjugate(QuaternionD.Read(gr, 0)), hip).Write(lr, 4 * leg.Hip);
+                        Quaternions.Multiply(Quaternions.Conjugate(hip), knee).Write(lr, 4 * leg.Knee);
+                        Quaternions.Multiply(Quaternions.Conjugate(knee), QuaternionD.Read(gr, 4 * leg.Ankle)).Write(lr, 4 * leg.Ankle);
+                    }
+                }
+
+                _clips[c] = new MotionClip(skeleton, Frames, 1.0 / 30, positions, rotations);
+                _lockers[c] = new FootLocker(rig);
+                _lockers[c].Plan(_clips[c], new[] { 0, Frames - 1 });
+                _rotations[c] = new double[4 * j];
+            }
+
+            for (int f = 1; f < Frames - 1; f++)
+            {
+                for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
+                {
+                    if (_lockers[0].LockWeight(f, channel) <= 0) throw new InvalidOperationException($"frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
+                }
+            }
+        }
+
+        /// <summary>One rendered frame of every character: its planned frame's legs solved (the clip's own pose copied in first).</summary>
+        [Benchmark]
+        public void Frame()
+        {
+            _frame = _frame % (Frames - 2) + 1;
+            for (int c = 0; c < _lockers.Length; c++)
+            {
+                MotionClip clip = _clips[c];
+                int j = clip.Skeleton.JointCount;
+                double[] pose = _rotations[c];
+                Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
+                _lockers[c].LockFrame(_frame, clip.LocalPositions.AsSpan(_frame * j * 3, j * 3), pose);
+            }
+        }
+    }
+}
