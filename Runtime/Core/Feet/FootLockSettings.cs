@@ -35,6 +35,20 @@ namespace DeltaInterpolator.Core.Feet
         public double HoldDistance { get; set; } = 0.3;
 
         /// <summary>
+        /// Speed (leg lengths per second) above which the filled motion ends a key's contact: a joint it moves that
+        /// fast has lifted off (or not yet landed). <see cref="double.PositiveInfinity"/> for filled motion whose timing
+        /// means nothing (<see cref="ForInterpolation"/>).
+        /// </summary>
+        public double HoldSpeed { get; set; } = 1.5;
+
+        /// <summary>
+        /// While easing in or out, a joint the filled motion has carried this far (leg lengths) from its target is not
+        /// pulled at all, nearer ones in proportion, so that a foot swinging away is not dragged back; 0 to ease by
+        /// time alone (<see cref="ForInterpolation"/>).
+        /// </summary>
+        public double EaseReach { get; set; } = 0.3;
+
+        /// <summary>
         /// Two keys that plant a foot joint within this distance (leg lengths) of each other make one
         /// contact across their gap (held on the line between the two spots), unless the filled motion lifts the joint
         /// higher than <see cref="StepHeight"/> in between. Farther apart, each key holds it on its own side of the gap.
@@ -56,6 +70,13 @@ namespace DeltaInterpolator.Core.Feet
         /// </summary>
         public double MaxReach { get; set; } = 0.995;
 
+        /// <summary>
+        /// Settings for filled motion that is an interpolation of the keys (SLERP): its feet slide at a steady speed
+        /// whatever the truth did, so neither their speed nor their distance from a key's spot says when a foot lifted;
+        /// keys' contacts are held as far as <see cref="HoldDistance"/> and eased by time alone.
+        /// </summary>
+        public static FootLockSettings ForInterpolation() => new FootLockSettings { HoldSpeed = double.PositiveInfinity, EaseReach = 0 };
+
         /// <summary>Throws when a value is out of range; called by <see cref="FootLocker"/>.</summary>
         /// <exception cref="ArgumentOutOfRangeException">A threshold is negative, an exit threshold is below its entry, or the reach is not in (0, 1].</exception>
         public void Validate()
@@ -64,6 +85,8 @@ namespace DeltaInterpolator.Core.Feet
             if (!(EnterSpeed >= 0) || !(ExitSpeed >= EnterSpeed)) throw new ArgumentOutOfRangeException(nameof(ExitSpeed), $"speeds {EnterSpeed} (enter) and {ExitSpeed} (exit); expected 0 ≤ enter ≤ exit");
             if (!(HoldDistance >= 0) || double.IsInfinity(HoldDistance)) throw new ArgumentOutOfRangeException(nameof(HoldDistance), $"hold distance {HoldDistance}; expected a non-negative number of leg lengths");
             if (!(BridgeDistance >= 0) || double.IsInfinity(BridgeDistance)) throw new ArgumentOutOfRangeException(nameof(BridgeDistance), $"bridge distance {BridgeDistance}; expected a non-negative number of leg lengths");
+            if (!(HoldSpeed >= 0)) throw new ArgumentOutOfRangeException(nameof(HoldSpeed), $"hold speed {HoldSpeed}; expected a non-negative number of leg lengths per second (or infinity)");
+            if (!(EaseReach >= 0) || double.IsInfinity(EaseReach)) throw new ArgumentOutOfRangeException(nameof(EaseReach), $"ease reach {EaseReach}; expected a non-negative number of leg lengths (0: off)");
             if (!(StepHeight >= 0) || double.IsInfinity(StepHeight)) throw new ArgumentOutOfRangeException(nameof(StepHeight), $"step height {StepHeight}; expected a non-negative number of leg lengths");
             if (!(EaseSeconds >= 0) || double.IsInfinity(EaseSeconds)) throw new ArgumentOutOfRangeException(nameof(EaseSeconds), $"ease {EaseSeconds} s; expected a non-negative number of seconds");
             if (!(MinContactSeconds >= 0) || double.IsInfinity(MinContactSeconds)) throw new ArgumentOutOfRangeException(nameof(MinContactSeconds), $"minimum contact {MinContactSeconds} s; expected a non-negative number of seconds");

@@ -36,7 +36,8 @@ namespace DeltaInterpolator.Core.Feet
     /// contact frame whose target the leg cannot reach (farther from the hip than
     /// <see cref="FootLockSettings.MaxReach"/> of thigh + shin, and farther than the filled motion already
     /// stretches it) is dropped: the foot is released, not stretched. Weights ease from 0 to 1 over
-    /// <see cref="FootLockSettings.EaseSeconds"/> before a contact and back after it, never across a key.</para>
+    /// <see cref="FootLockSettings.EaseSeconds"/> before a contact and back after it, never across a key, and
+    /// fade where the filled joint is far from the target (<see cref="FootLockSettings.EaseReach"/>).</para>
     /// <para><b>Solving a leg.</b> Heel (ankle) held: the ankle goes to its target, the foot keeps its global
     /// orientation. Toe held, heel free (a rolling foot): the foot keeps its orientation and is carried so that
     /// the toe lands on its target. Both held: the foot lies on the line from the heel's to the toe's target, the
@@ -192,7 +193,7 @@ namespace DeltaInterpolator.Core.Feet
                 _plantedHeight[c] = PlantedHeightOf(c, leg, keys);
                 for (int f = 0; f < frames; f++) _rise[f] = _feet[(row + f) * 3 + 1] - _ground[row + f] - _plantedHeight[c];
                 int next = 1;
-                LabelFromKeys(c, leg, keys, ease, ref next);
+                LabelFromKeys(c, leg, keys, ease, dt, ref next);
                 LabelFree(c, leg, dt, minFrames, ref next);
                 Separate(c, ease);
                 Anchor(c, leg);
@@ -448,8 +449,9 @@ namespace DeltaInterpolator.Core.Feet
         /// low and near that spot; two planted keys at the same spot with the foot kept low between them make one
         /// contact across the gap.
         /// </summary>
-        private void LabelFromKeys(int c, double leg, IReadOnlyList<int> keys, int ease, ref int next)
+        private void LabelFromKeys(int c, double leg, IReadOnlyList<int> keys, int ease, double dt, ref int next)
         {
+            double fast = _settings.HoldSpeed * leg;
             int cap = _capacity, row = c * cap;
             double enter = _settings.EnterHeight * leg, exit = _settings.ExitHeight * leg;
             double hold = _settings.HoldDistance * leg, step = _settings.StepHeight * leg;
@@ -472,7 +474,7 @@ namespace DeltaInterpolator.Core.Feet
                 {
                     int id = next++;
                     _segment[row + b] = id;
-                    for (int f = b - 1; f > a && _rise[f] <= exit && Horizontal(c, f, b) <= hold; f--)
+                    for (int f = b - 1; f > a && _rise[f] <= exit && Horizontal(c, f, b) <= hold && HorizontalSpeed(c, f, dt) <= fast; f--)
                     {
                         _segment[row + f] = id;
                         backStart = f;
@@ -481,7 +483,7 @@ namespace DeltaInterpolator.Core.Feet
 
                 if (!plantedA) continue;
                 int forwardEnd = a;
-                for (int f = a + 1; f < backStart && _rise[f] <= exit && Horizontal(c, f, a) <= hold; f++)
+                for (int f = a + 1; f < backStart && _rise[f] <= exit && Horizontal(c, f, a) <= hold && HorizontalSpeed(c, f, dt) <= fast; f++)
                 {
                     _segment[row + f] = _segment[row + a];
                     forwardEnd = f;
@@ -732,6 +734,13 @@ namespace DeltaInterpolator.Core.Feet
         {
             double x = 1 - d / (double)(ease + 1);
             double w = x * x * (3 - 2 * x);
+            if (_settings.EaseReach > 0)
+            {
+                // A joint the filled motion has carried far from the target is pulled less (a swinging foot is not dragged back).
+                double far = (Vector3D.Read(_anchor, (row + edge) * 3) - Vector3D.Read(_feet, (row + f) * 3)).Length;
+                w *= Math.Max(0, 1 - far / (_settings.EaseReach * _rig.LegLength));
+            }
+
             if (w <= _weight[row + f]) return;
             _weight[row + f] = w;
             Copy(_anchor, (row + edge) * 3, _anchor, (row + f) * 3);

@@ -316,7 +316,8 @@ namespace DeltaInterpolator.Cli.Verbs
             // Feet are locked on the model's skeleton, before the results are mapped back (both methods alike).
             modelSettings.FootLocking = feet;
             var modelBaker = new ClipBaker(model, modelSettings);
-            var slerpBaker = new ClipBaker(new SlerpBaseline(), new BakeSettings { Name = "SLERP", FootLocking = feet });
+            // SLERP's feet slide steadily whatever the truth did: its timing says nothing about when a foot lifts.
+            var slerpBaker = new ClipBaker(new SlerpBaseline(), new BakeSettings { Name = "SLERP", FootLocking = feet == null ? null : FootLockSettings.ForInterpolation() });
             BakePlan modelPlan = Plan(modelBaker, source.FrameCount, modelKeys, input);
             BakePlan slerpPlan = Plan(slerpBaker, source.FrameCount, modelKeys, input);
 
