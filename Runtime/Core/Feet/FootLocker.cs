@@ -598,21 +598,24 @@ namespace DeltaInterpolator.Core.Feet
             return count;
         }
 
+        /// <summary>The next contact of a channel's row at or after frame <paramref name="s"/>: its first (s) and last (e) frame; false when none is left.</summary>
+        private bool NextContact(int row, ref int s, out int e)
+        {
+            int n = _frames;
+            while (s < n && _segment[row + s] == 0) s++;
+            e = s;
+            if (s >= n) return false;
+            int id = _segment[row + s];
+            while (e + 1 < n && _segment[row + e + 1] == id) e++;
+            return true;
+        }
+
         /// <summary>Where channel c is held on each of its contact frames (per contact: through its keys, or its mean).</summary>
         private void Anchor(int c, double leg)
         {
             int cap = _capacity, row = c * cap, n = _frames;
-            for (int s = 0; s < n;)
+            for (int s = 0; NextContact(row, ref s, out int e); s = e + 1)
             {
-                int id = _segment[row + s];
-                if (id == 0)
-                {
-                    s++;
-                    continue;
-                }
-
-                int e = s;
-                while (e + 1 < n && _segment[row + e + 1] == id) e++;
                 int firstKey = -1, lastKey = -1;
                 for (int f = s; f <= e; f++)
                 {
@@ -665,7 +668,6 @@ namespace DeltaInterpolator.Core.Feet
                     for (int f = s; f <= e; f++) held.Write(_anchor, (row + f) * 3);
                 }
 
-                s = e + 1;
             }
         }
 
@@ -700,17 +702,8 @@ namespace DeltaInterpolator.Core.Feet
         {
             int cap = _capacity, row = c * cap, n = _frames;
             for (int f = 0; f < n; f++) _weight[row + f] = _segment[row + f] != 0 ? 1 : 0;
-            for (int s = 0; s < n;)
+            for (int s = 0; NextContact(row, ref s, out int e); s = e + 1)
             {
-                int id = _segment[row + s];
-                if (id == 0)
-                {
-                    s++;
-                    continue;
-                }
-
-                int e = s;
-                while (e + 1 < n && _segment[row + e + 1] == id) e++;
                 for (int d = 1; d <= ease; d++)
                 {
                     int f = s - d;
@@ -725,7 +718,6 @@ namespace DeltaInterpolator.Core.Feet
                     Blend(row, f, e, d, ease);
                 }
 
-                s = e + 1;
             }
         }
 
