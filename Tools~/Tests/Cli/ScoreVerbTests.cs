@@ -185,5 +185,24 @@ namespace DeltaInterpolator.Tests.Cli
             string fifo = CliHarness.MakeFifo(Path.Combine(_dir, "speed.json"));
             CliHarness.AssertOneErrorLine(CliHarness.RunWithin(60, "speed", "--characters", "2", "--model", tiny, "--json", fifo));
         }
+
+        [Test]
+        public void BakeMapTakesHostileInputsAsBadInput()
+        {
+            // bake --map through the same safe input path as retarget --map: folder, FIFO, device, huge, a map that is the output.
+            string output = Path.Combine(_dir, "o.bvh");
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "bake", Sample, "--every", "60", "--out", output, "--map", _dir), "directory");
+            string fifo = CliHarness.MakeFifo(Path.Combine(_dir, "map.json"));
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "bake", Sample, "--every", "60", "--out", output, "--map", fifo), "named pipe");
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "bake", Sample, "--every", "60", "--out", output, "--map", "/dev/zero"), "device");
+            string huge = Path.Combine(_dir, "huge.json");
+            File.WriteAllText(huge, "{\"Hips\": \"" + new string('x', 2 << 20) + "\"}");
+            CliHarness.AssertOneErrorLine(CliHarness.RunWithin(30, "bake", Sample, "--every", "60", "--out", output, "--map", huge), "at most");
+            string map = Path.Combine(_dir, "real.json");
+            File.WriteAllText(map, "{\"LeftToe\": null}");
+            CliHarness.AssertOneErrorLine(CliHarness.Run("bake", Sample, "--every", "60", "--out", map, "--map", map, "--force"), "input");
+            Assert.That(File.ReadAllText(map), Is.EqualTo("{\"LeftToe\": null}"), "the map was not replaced");
+            Assert.That(File.Exists(output), Is.False, "nothing written");
+        }
 }
 }
