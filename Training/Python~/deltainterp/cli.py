@@ -150,6 +150,11 @@ def _train(sub) -> None:
     p.add_argument("--longest-past-share", type=float, default=0.4,
                    help="with --min-past < 10: share of batches with P = 10; half the rest has P = min-past, "
                         "the rest spread between (default 0.4)")
+    p.add_argument("--min-gap", type=int, default=5,
+                   help="shortest gap n (missing frames) trained on; n is drawn with p(n) ∝ 1/n (default 5, the paper)")
+    p.add_argument("--max-gap", type=int, default=39,
+                   help="longest gap trained on (default 39, the paper); raise it for keys further apart, e.g. "
+                        "119 for a key every 4 s at 30 fps (longer layouts come from windows of their own length)")
     p.add_argument("--init-from", default="",
                    help="start a new run from these weights (an exported .onnx or a checkpoint.pt) instead of random")
     p.add_argument("--threads", type=int, default=1,
@@ -337,7 +342,7 @@ def main(argv: Optional[List[str]] = None) -> int:
                               checkpoint_every=args.checkpoint_every, validate_every=args.validate_every,
                               max_minutes=args.max_minutes, threads=args.threads, min_past=args.min_past,
                               longest_past_share=args.longest_past_share, uniform_past=args.uniform_past,
-                              init_from=args.init_from)
+                              init_from=args.init_from, min_gap=args.min_gap, max_gap=args.max_gap)
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0

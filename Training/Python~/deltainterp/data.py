@@ -147,6 +147,16 @@ def windows(frame_count: int, length: int, offset: int) -> List[int]:
     return starts
 
 
+def training_ranges(pack: MotionPack, validation_fraction: float = 0.1) -> List[Tuple[int, int]]:
+    """Each file's training part as absolute [start, end) frames: its first (1 − fraction), as in
+    `split_windows`."""
+    ranges = []
+    for i in range(len(pack.files)):
+        a, b = pack.file_frames(i)
+        ranges.append((a, a + int(round((b - a) * (1.0 - validation_fraction)))))
+    return ranges
+
+
 def split_windows(pack: MotionPack, length: int = 50, offset: int = 20, validation_fraction: float = 0.1,
                   validation_length: int = 65, validation_offset: int = 40) -> Tuple[np.ndarray, np.ndarray]:
     """Training windows from the first (1 − fraction) of each file, validation windows from its tail.
@@ -163,5 +173,5 @@ def split_windows(pack: MotionPack, length: int = 50, offset: int = 20, validati
     return np.asarray(train, dtype=np.int64), np.asarray(val, dtype=np.int64)
 
 
-__all__ = ["MotionPack", "prepare", "load_pack", "save_pack", "windows", "split_windows",
+__all__ = ["MotionPack", "prepare", "load_pack", "save_pack", "windows", "split_windows", "training_ranges",
            "TRAIN_SUBJECTS", "TEST_SUBJECTS", "subject_of"]

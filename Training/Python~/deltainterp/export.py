@@ -35,7 +35,7 @@ OPSET = 15
 TRAINING_PAST = (10, 10)      # TransitionSampler defaults used by `train` (past keys, gap range); the
                               # lower end of the past range comes from the run's --min-past
 TRAINING_FUTURE = (1, 1)
-TRAINING_MISSING = (5, 39)
+TRAINING_MISSING = (5, 39)     # the paper's gaps; a run's --min-gap/--max-gap replace it
 
 
 def _constants(model: DeltaInterpolator) -> Tuple[Tensor, Tensor, Tensor]:
@@ -198,7 +198,8 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
         "input_delta_mode": cfg.input_delta_mode,
         "training": {"past_frames": [int(loaded.train_config.get("min_past", TRAINING_PAST[0])), TRAINING_PAST[1]],
                      "future_frames": list(TRAINING_FUTURE),
-                     "missing_frames": list(TRAINING_MISSING), "fps": loaded.fps,
+                     "missing_frames": [int(loaded.train_config.get("min_gap", TRAINING_MISSING[0])),
+                                        int(loaded.train_config.get("max_gap", TRAINING_MISSING[1]))], "fps": loaded.fps,
                      "data": loaded.data_description or "LaFAN1 subjects 1-4"},
         "max_frame_index": C.MAX_FRAME_INDEX,
         "architecture": {"width": cfg.width, "blocks": cfg.blocks, "heads": cfg.heads,

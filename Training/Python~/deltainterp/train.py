@@ -19,7 +19,7 @@ import torch
 from . import quaternions, safe_output
 from .benchmark import l2q as benchmark_l2q
 from .checkpoint import CheckpointError, read_checkpoint, save_checkpoint_file
-from .data import MotionPack, load_pack, split_windows
+from .data import MotionPack, load_pack, split_windows, training_ranges, windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
 from .objective import SkeletonTensors, loss, make_batch, predict
@@ -49,6 +49,8 @@ class TrainConfig:
     min_past: int = 10          # past keys P drawn on [min_past, 10] (sampler.past_probabilities)
     longest_past_share: float = 0.4
     uniform_past: bool = False  # p(P) uniform on [min_past, 10] instead of weighted to P = 10 and P = 1
+    min_gap: int = 5            # missing frames n drawn on [min_gap, max_gap] with p(n) ∝ 1/n (the paper: 5..39)
+    max_gap: int = 39           # longer gaps need longer windows: see WindowSource
     init_from: str = ""         # start from these weights (an exported .onnx or a checkpoint.pt), not random
 
 
@@ -66,22 +68,45 @@ def skeleton_tensors(pack: MotionPack, unit_scale: float, device) -> SkeletonTen
 
 class WindowSource:
     """Draws transition batches from training windows: one key layout per batch (one gap n), a random
-    start inside each 50-frame window, optional mirror and random-yaw augmentation."""
+    start inside each 50-frame window, optional mirror and random-yaw augmentation.
+
+    A layout longer than the 50-frame windows (a gap beyond 39 frames with 10 past keys) is drawn from
+    windows of its own length, every `long_offset` frames of each file's training part (`ranges`): cutting
+    every window to the longest layout instead would drop the short files (half the CMU files are under
+    160 frames) from the short gaps too."""
 
     def __init__(self, pack: MotionPack, starts: np.ndarray, window: int, sampler: TransitionSampler,
-                 mirror: bool, random_yaw: bool, device) -> None:
+                 mirror: bool, random_yaw: bool, device, ranges: Optional[List[tuple]] = None,
+                 long_offset: int = 5) -> None:
         self.roots = torch.from_numpy(pack.root_positions).to(device)
         self.quats = torch.from_numpy(pack.local_quaternions).to(device)
         self.starts, self.window, self.sampler = starts, window, sampler
         self.mirror, self.random_yaw = mirror, random_yaw
         self.mirror_map = pack.skeleton.mirror_map()
         self.device = device
+        self.ranges = ranges or []
+        self.long_offset = long_offset
+        self._long_starts: Dict[int, np.ndarray] = {}
+
+    def starts_for(self, length: int):
+        """(window starts, window length) for a layout of `length` frames."""
+        if length <= self.window:
+            return self.starts, self.window
+        if length not in self._long_starts:
+            self._long_starts[length] = np.asarray(
+                [a + s for a, b in self.ranges for s in windows(b - a, length, self.long_offset)], dtype=np.int64)
+        starts = self._long_starts[length]
+        if len(starts) == 0:
+            raise ValueError(f"no training window of {length} frames (a gap of {length - 11} frames after 10 "
+                             "past keys) in the first 90 % of any file; expected a smaller --max-gap")
+        return starts, length
 
     def draw(self, rng: np.random.Generator, batch_size: int):
         layout = self.sampler.sample(rng)
         length = layout.length
-        picks = self.starts[rng.integers(0, len(self.starts), batch_size)]
-        shift = rng.integers(0, self.window - length + 1, batch_size)
+        starts, window = self.starts_for(length)
+        picks = starts[rng.integers(0, len(starts), batch_size)]
+        shift = rng.integers(0, window - length + 1, batch_size)
         idx = torch.from_numpy(picks + shift)[:, None] + torch.arange(length)[None]
         idx = idx.to(self.device)
         roots, quats = self.roots[idx].double(), self.quats[idx].double()
@@ -137,6 +162,7 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
 
 
 VALIDATION_SHORT_PASTS = (1, 5)   # besides P = 10, when training over several past lengths
+VALIDATION_LONG_GAPS = (60,)      # besides 5, 15, 30, when --max-gap reaches them (a key every 2 s at 30 fps)
 
 
 def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
@@ -159,7 +185,7 @@ RESUME_SETTINGS = {"batch_size": "--batch-size", "peak_lr": "--lr", "warmup_step
                    "decay_at": "--decay-at", "reconstruction_scale": "--reconstruction-scale", "seed": "--seed",
                    "unit_scale": "unit_scale", "mirror": "--mirror", "random_yaw": "--random-yaw",
                    "min_past": "--min-past", "longest_past_share": "--longest-past-share",
-                   "uniform_past": "--uniform-past"}
+                   "uniform_past": "--uniform-past", "min_gap": "--min-gap", "max_gap": "--max-gap"}
 
 
 def run_checkpoint(out: Path) -> Optional[Path]:
@@ -273,6 +299,10 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             raise CheckpointError(ckpt_path, "resuming another architecture: " + ", ".join(different),
                                   "expected the run's --preset and overrides (or a new --out)")
 
+    if 10 + cfg.max_gap + 1 > model_cfg.embedding_size:
+        raise ValueError(f"--max-gap {cfg.max_gap}: 10 past keys + {cfg.max_gap} missing frames + the target need "
+                         f"frame indices up to {10 + cfg.max_gap}, but the {cfg.preset} network embeds frames "
+                         f"0..{model_cfg.embedding_size - 1}; expected --max-gap ≤ {model_cfg.embedding_size - 11}")
     torch.manual_seed(cfg.seed)  # seed BEFORE building the model: the seed decides the initial weights
     model = DeltaInterpolator(model_cfg).to(device)
     if cfg.init_from and state is None:
@@ -314,8 +344,13 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         from torch.nn.parallel import DistributedDataParallel
         net = DistributedDataParallel(model, device_ids=[device.index] if device.type == "cuda" else None)
     sampler = TransitionSampler(min_past=cfg.min_past, longest_past_share=cfg.longest_past_share,
-                                uniform_past=cfg.uniform_past)
-    source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device)
+                                uniform_past=cfg.uniform_past, min_gap=cfg.min_gap, max_gap=cfg.max_gap)
+    source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device,
+                          ranges=training_ranges(pack))
+    source.starts_for(10 + cfg.max_gap + 1)  # refuse a --max-gap no file can give before training starts
+    # Long gaps are validated on windows of their own length (fewer files have such tails).
+    long_gaps = tuple(n for n in VALIDATION_LONG_GAPS if n <= cfg.max_gap)
+    long_val = {n: split_windows(pack, validation_length=10 + n + 1)[1] for n in long_gaps}
 
     log_path = out / "log.csv"
     fields = ["step", "lr", "total", "quat", "pos", "key_quat", "key_pos", "seconds"]
@@ -389,6 +424,9 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             window_losses.clear()
         if rank == 0 and len(val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             last_val = validation_metrics(model, pack, val_starts, skeleton)
+            for n, starts in long_val.items():
+                if len(starts) > 0:
+                    last_val.update(validation_metrics(model, pack, starts, skeleton, gaps=(n,)))
             for p in VALIDATION_SHORT_PASTS if cfg.min_past < 10 else ():
                 short = validation_metrics(model, pack, val_starts, skeleton, past=p)
                 last_val.update({f"p{p}_{k}": v for k, v in short.items()})
@@ -402,7 +440,7 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             if bar is not None:
                 bar.write(f"step {step}: " + "  ".join(
                     f"n={n} L2Q {last_val[f'model_l2q_{n}']:.3f} (slerp {last_val.get(f'slerp_l2q_{n}', float('nan')):.3f})"
-                    for n in (5, 15, 30)))
+                    for n in (5, 15, 30) + tuple(n for n in long_val if f"model_l2q_{n}" in last_val)))
         out_of_time = time_is_up()
         if step % cfg.checkpoint_every == 0 or step == cfg.steps or out_of_time:
             save_checkpoint()

@@ -106,3 +106,48 @@ def test_two_process_gloo_ddp(synthetic_pack_path, tmp_path):
     state = read_checkpoint(out / "checkpoint.pt")
     assert state["step"] == 4
     assert len(state["rng"]) == 2 and state["rng"][0] != state["rng"][1]  # one data stream per rank
+
+
+def test_long_gaps_draw_whole_windows_inside_each_files_training_part(synthetic_pack_path):
+    """--max-gap beyond 39: a 10 + n + 1 frame layout comes from windows of its own length that never
+    cross into the validation tail or the next file; short layouts keep the 50-frame windows."""
+    from deltainterp.data import training_ranges
+    pack = load_pack(str(synthetic_pack_path))
+    train_starts, _ = split_windows(pack)
+    ranges = training_ranges(pack)
+    source = WindowSource(pack, train_starts, 50, TransitionSampler(min_gap=100, max_gap=119), False, False,
+                          "cpu", ranges=ranges)
+    assert source.starts_for(41)[0] is train_starts
+    for length in (111, 130):
+        starts, window = source.starts_for(length)
+        assert window == length and len(starts) > 0
+        assert all(any(a <= s and s + length <= b for a, b in ranges) for s in starts)
+    layout, roots, quats = source.draw(np.random.default_rng(0), 4)
+    assert 100 <= layout.gap <= 119 and roots.shape[1] == layout.length
+    with pytest.raises(ValueError, match="no training window of 700 frames"):
+        source.starts_for(700)
+
+
+def test_max_gap_trains_validates_and_exports_its_range(skeleton, tmp_path):
+    from conftest import synthetic_motion
+    from deltainterp.checkpoint import load_checkpoint
+    from deltainterp.data import MotionPack, save_pack
+    from deltainterp.export import export_model
+    import json, onnx
+    # 1000-frame files: 100-frame tails hold a 71-frame window for the gap of 60
+    motion = [synthetic_motion(1000, skeleton.joint_count, seed) for seed in (21, 22)]
+    pack = MotionPack(skeleton, ["a_subject1.bvh", "b_subject2.bvh"], np.array([0, 1000, 2000]),
+                      np.concatenate([r for r, _ in motion]), np.concatenate([q for _, q in motion]), 1 / 30)
+    save_pack(pack, str(tmp_path / "long.npz"))
+    path = train(config(tmp_path / "long.npz", tmp_path / "run", steps=6, max_gap=70, validate_every=6), progress=False)
+    record = json.loads((tmp_path / "run" / "validation.jsonl").read_text().splitlines()[-1])
+    assert "model_l2q_60" in record and "slerp_l2p_60" in record  # the long gap is validated on its own windows
+    report = export_model(load_checkpoint(str(path)), str(tmp_path / "m.onnx"), "long")
+    meta = {p.key: p.value for p in onnx.load(report.paths["whole"]).metadata_props}
+    contract = json.loads(next(v for v in meta.values() if '"missing_frames"' in v))
+    assert contract["training"]["missing_frames"] == [5, 70]
+
+
+def test_max_gap_beyond_the_frame_embedding_is_refused(synthetic_pack_path, tmp_path):
+    with pytest.raises(ValueError, match="expected --max-gap ≤ 245"):
+        train(config(synthetic_pack_path, tmp_path / "run", steps=1, preset="runtime", max_gap=246), progress=False)
