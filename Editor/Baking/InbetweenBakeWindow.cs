@@ -42,6 +42,9 @@ namespace DeltaInterpolator.Editor.Baking
         [SerializeField] private int _gapFrames = 15;
         [SerializeField] private int _pastFrames = 10;
         [NonSerialized] private AnimationClip? _describedClip;
+        [NonSerialized] private double _describedRate;
+        [NonSerialized] private InbetweeningModel? _ratedModel;
+        [NonSerialized] private double _modelRate = ModelContract.DefaultFramesPerSecond;
         [NonSerialized] private string _description = "";
 
         [MenuItem("Window/Animation/In-between Baker")]
@@ -61,8 +64,12 @@ namespace DeltaInterpolator.Editor.Baking
                 if (_keyClip != null)
                 {
                     // Reading every curve is slow for big clips: once per clip, not per repaint.
-                    if (_describedClip != _keyClip) _description = DescribeKeys(_keyClip);
+                    if (_ratedModel != _model) _modelRate = FrameRateOf(_model); // parsed once per model, not per repaint
+                    _ratedModel = _model;
+                    double rate = _modelRate;
+                    if (_describedClip != _keyClip || _describedRate != rate) _description = DescribeKeys(_keyClip, rate);
                     _describedClip = _keyClip;
+                    _describedRate = rate;
                     EditorGUILayout.HelpBox(_description, MessageType.Info);
                 }
             }
@@ -95,7 +102,7 @@ namespace DeltaInterpolator.Editor.Baking
                 throw new ModelContractException(model.name, "no inference engine is installed", "install com.unity.ai.inference 2.4.0 or later (Sentis)");
             }
 
-            return new Inbetweener(factory.Create(model, ModelGraphKind.Whole)) { Id = model.name, DisplayName = model.name };
+            return ModelAssetGraphs.Load(model, factory, LazyGraphs.None);
         }
 
         private string? Problem()
@@ -111,12 +118,26 @@ namespace DeltaInterpolator.Editor.Baking
             return null;
         }
 
-        private static string DescribeKeys(AnimationClip clip)
+        // Keys are counted at the model's frame rate, which its contract owns (30 when it does not say).
+        private static double FrameRateOf(InbetweeningModel? model)
         {
-            ClipKeyFrames keys = ClipKeyReader.Read(ClipSampler.PoseKeyTimes(clip), ModelFrameRate.Default, clip.length);
+            if (model == null) return ModelContract.DefaultFramesPerSecond;
+            try
+            {
+                return ModelContract.FromJson(model.ContractJson, model.name).FramesPerSecond;
+            }
+            catch (ModelContractException)
+            {
+                return ModelContract.DefaultFramesPerSecond; // the bake itself reports the broken contract
+            }
+        }
+
+        private static string DescribeKeys(AnimationClip clip, double rate)
+        {
+            ClipKeyFrames keys = ClipKeyReader.Read(ClipSampler.PoseKeyTimes(clip), rate, clip.length);
             var gaps = new List<string>();
             for (int g = 0; g < keys.GapCount; g++) gaps.Add(keys.GapLength(g).ToString(CultureInfo.InvariantCulture));
-            string text = $"{keys.Frames.Count} key frames at {ModelFrameRate.Default:0} fps; gaps of {(gaps.Count == 0 ? "none" : string.Join(", ", gaps))} frames.";
+            string text = $"{keys.Frames.Count} key frames at {rate:0.##} fps; gaps of {(gaps.Count == 0 ? "none" : string.Join(", ", gaps))} frames.";
             if (keys.SnappedKeys > 0) text += $" {keys.SnappedKeys} keys lie between frames and are rounded (up to {keys.LargestSnapFrames:0.##} frame).";
             if (keys.IgnoredKeys > 0) text += $" {keys.IgnoredKeys} keys outside the clip are ignored.";
             return text;
@@ -131,7 +152,7 @@ namespace DeltaInterpolator.Editor.Baking
                 {
                     ModelContract contract = inbetweener.Contract;
                     Skeleton skeleton = contract.Skeleton;
-                    double rate = ModelFrameRate.Of(contract);
+                    double rate = contract.FramesPerSecond;
                     string?[] paths = BonePaths.Resolve(skeleton.Names, ClipSampler.TransformPaths(character.transform), out List<string> missing);
                     if (missing.Count > 0)
                     {

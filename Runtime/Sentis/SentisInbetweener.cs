@@ -26,25 +26,7 @@ namespace DeltaInterpolator.Sentis
         {
             if (model == null) throw new ArgumentNullException(nameof(model));
             var factory = new SentisBackendFactory(backendType == BackendType.CPU ? SentisBackendFactory.CpuName : SentisBackendFactory.GpuName, backendType);
-            IInferenceBackend whole = factory.Create(model, ModelGraphKind.Whole);
-            IInferenceBackend? keys = null;
-            IInferenceBackend? frame = null;
-            try
-            {
-                if (model.HasLazyGraphs)
-                {
-                    keys = factory.Create(model, ModelGraphKind.Keys);
-                    frame = factory.Create(model, ModelGraphKind.Frame);
-                }
-            }
-            catch
-            {
-                whole.Dispose();
-                keys?.Dispose();
-                throw;
-            }
-
-            return new Inbetweener(whole, keys, frame) { Id = model.name, DisplayName = model.name };
+            return ModelAssetGraphs.Load(model, factory);
         }
 
         /// <summary>
@@ -64,32 +46,51 @@ namespace DeltaInterpolator.Sentis
             ModelAsset? keys = null, IReadOnlyDictionary<string, string>? keysMetadata = null,
             ModelAsset? frame = null, IReadOnlyDictionary<string, string>? frameMetadata = null)
         {
-            bool lazy = keys != null && frame != null;
-            if (lazy && (keysMetadata == null || frameMetadata == null))
+            if (keys != null && frame != null && (keysMetadata == null || frameMetadata == null))
             {
                 throw new ArgumentException("the keys and frame graphs need their metadata too");
             }
 
-            SentisBackend wholeBackend = SentisBackend.Load(whole, wholeMetadata, source, backendType);
-            SentisBackend? keysBackend = null;
-            SentisBackend? frameBackend = null;
-            try
+            return ModelLoader.Load(new AssetGraphs(whole, wholeMetadata, source, backendType, keys, keysMetadata, frame, frameMetadata));
+        }
+
+        /// <summary>Graphs given as imported assets with their captured metadata.</summary>
+        private sealed class AssetGraphs : IModelGraphs
+        {
+            private readonly ModelAsset _whole;
+            private readonly IReadOnlyDictionary<string, string> _wholeMetadata;
+            private readonly BackendType _backendType;
+            private readonly ModelAsset? _keys;
+            private readonly IReadOnlyDictionary<string, string>? _keysMetadata;
+            private readonly ModelAsset? _frame;
+            private readonly IReadOnlyDictionary<string, string>? _frameMetadata;
+
+            public AssetGraphs(ModelAsset whole, IReadOnlyDictionary<string, string> wholeMetadata, string source, BackendType backendType,
+                ModelAsset? keys, IReadOnlyDictionary<string, string>? keysMetadata, ModelAsset? frame, IReadOnlyDictionary<string, string>? frameMetadata)
             {
-                if (lazy)
-                {
-                    keysBackend = SentisBackend.Load(keys!, keysMetadata!, source + " (keys graph)", backendType);
-                    frameBackend = SentisBackend.Load(frame!, frameMetadata!, source + " (frame graph)", backendType);
-                }
-            }
-            catch
-            {
-                wholeBackend.Dispose();
-                keysBackend?.Dispose();
-                throw;
+                _whole = whole;
+                _wholeMetadata = wholeMetadata;
+                Source = source;
+                _backendType = backendType;
+                _keys = keys;
+                _keysMetadata = keysMetadata;
+                _frame = frame;
+                _frameMetadata = frameMetadata;
             }
 
-            // The Inbetweener owns the backends from here: it disposes them when a check fails.
-            return new Inbetweener(wholeBackend, keysBackend, frameBackend);
+            public string Source { get; }
+
+            public bool HasLazyGraphs => _keys != null && _frame != null;
+
+            public IInferenceBackend Open(ModelGraphKind graph)
+            {
+                switch (graph)
+                {
+                    case ModelGraphKind.Keys: return SentisBackend.Load(_keys!, _keysMetadata!, Source + " (keys graph)", _backendType);
+                    case ModelGraphKind.Frame: return SentisBackend.Load(_frame!, _frameMetadata!, Source + " (frame graph)", _backendType);
+                    default: return SentisBackend.Load(_whole, _wholeMetadata, Source, _backendType);
+                }
+            }
         }
     }
 }

@@ -43,25 +43,7 @@ namespace DeltaInterpolator.Unity
 
         private static TransitionDecoder Load(InbetweeningModel model, IInferenceBackendFactory factory)
         {
-            IInferenceBackend whole = factory.Create(model, ModelGraphKind.Whole);
-            IInferenceBackend? keys = null;
-            IInferenceBackend? frame = null;
-            try
-            {
-                if (model.HasLazyGraphs)
-                {
-                    keys = factory.Create(model, ModelGraphKind.Keys);
-                    frame = factory.Create(model, ModelGraphKind.Frame);
-                }
-            }
-            catch
-            {
-                whole.Dispose();
-                keys?.Dispose();
-                throw;
-            }
-
-            var inbetweener = new Inbetweener(whole, keys, frame) { Id = model.name, DisplayName = model.name };
+            Inbetweener inbetweener = ModelAssetGraphs.Load(model, factory);
             return factory.RunsOffMainThread ? new InferenceWorker(inbetweener) : (TransitionDecoder)new MainThreadDecoder(inbetweener);
         }
 

@@ -118,10 +118,15 @@ namespace DeltaInterpolator.Core.Inference
         public string TrainingData { get; private set; } = "";
 
         /// <summary>
-        /// Frame rate motion is resampled to before inference: <see cref="TrainingFps"/>, or 30 (LaFAN1's) when a
-        /// model does not say.
+        /// Frame rate motion is resampled to before inference, and key frames are counted and baked clips
+        /// sampled at: <see cref="TrainingFps"/>, or <see cref="DefaultFramesPerSecond"/> when a model does not
+        /// say. Decided here once, when the metadata is read (and reported as a check then); every front
+        /// end and the playback read it from here and default nothing again.
         /// </summary>
-        public double FramesPerSecond => TrainingFps > 0 ? TrainingFps : 30.0;
+        public double FramesPerSecond => TrainingFps > 0 ? TrainingFps : DefaultFramesPerSecond;
+
+        /// <summary>The rate of a model whose metadata has no <c>training.fps</c>: LaFAN1's (and the shipped models'), 30.</summary>
+        public const double DefaultFramesPerSecond = 30;
 
         /// <summary>Network size.</summary>
         public ModelArchitecture Architecture { get; private set; } = new ModelArchitecture(0, 0, 0, 0, 0, 0);
@@ -457,6 +462,12 @@ namespace DeltaInterpolator.Core.Inference
                         $"expected a frame rate from {Fmt(MinTrainingFps)} to {Fmt(MaxTrainingFps)} fps (LaFAN1 and the shipped models: 30); export the checkpoint again");
                     TrainingFps = 0;
                 }
+                if (!t.ContainsKey("fps"))
+                {
+                    report.Info(Source, $"the metadata has no training.fps: its motion is taken at {Fmt(DefaultFramesPerSecond)} fps (LaFAN1's)",
+                        "export the checkpoint again with a newer exporter if the model was trained at another rate");
+                }
+
                 TrainingData = t.TryGetValue("data", out JsonValue? data) ? tf.Guard(() => data.ExpectString("training.data"), "") : "";
             }
             else if (training != null)
@@ -465,7 +476,7 @@ namespace DeltaInterpolator.Core.Inference
             }
             else
             {
-                report.Info(Source, "the metadata has no training ranges", "requests are not checked against the past-frame and gap lengths the model was trained on; a newer exporter writes them");
+                report.Info(Source, $"the metadata has no training ranges and no training.fps (its motion is taken at {Fmt(DefaultFramesPerSecond)} fps, LaFAN1's)", "requests are not checked against the past-frame and gap lengths the model was trained on; a newer exporter writes them");
             }
 
             if (m.TryGetValue("architecture", out JsonValue? archValue))

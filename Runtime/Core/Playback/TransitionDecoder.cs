@@ -18,7 +18,7 @@ namespace DeltaInterpolator.Core.Playback
         internal TransitionDecoder(Inbetweener inbetweener)
         {
             Inbetweener = inbetweener ?? throw new ArgumentNullException(nameof(inbetweener));
-            FrameRate = ModelFrameRate.Of(inbetweener.Contract);
+            FrameRate = inbetweener.Contract.FramesPerSecond;
             _features = new KeyFeatureBuilder(inbetweener.Contract);
         }
 

@@ -56,7 +56,7 @@ namespace DeltaInterpolator.Cli.Verbs
         {
             _contract.CheckSkeleton(input.Skeleton, _inputPath);
             double fps = 1.0 / input.Motion.FrameTime;
-            double modelFps = _contract.TrainingFps > 0 ? _contract.TrainingFps : 30;
+            double modelFps = _contract.FramesPerSecond;
             if (Math.Abs(fps - modelFps) > 1e-3 * modelFps)
             {
                 throw new CliErrors.UsageException(string.Format(CultureInfo.InvariantCulture,
