@@ -12,6 +12,29 @@ namespace DeltaInterpolator.Core.Bvh
     /// </summary>
     public sealed class BvhAnimation
     {
+        /// <summary>
+        /// <paramref name="motion"/> as a BVH of its own skeleton with LaFAN1's channel layout (root: position
+        /// and ZYX rotation, other joints: ZYX rotation; an end site on every leaf): how motion on a model's
+        /// skeleton is written (retargeted clips, the demo's ground truth and bakes).
+        /// </summary>
+        public static BvhAnimation ForSkeleton(MotionClip motion, string name)
+        {
+            Skeleton skeleton = motion.Skeleton;
+            var channels = new BvhChannel[skeleton.JointCount][];
+            var endSites = new Vector3D[skeleton.JointCount][];
+            var hasChild = new bool[skeleton.JointCount];
+            for (int j = 1; j < skeleton.JointCount; j++) hasChild[skeleton.Parents[j]] = true;
+            for (int j = 0; j < skeleton.JointCount; j++)
+            {
+                channels[j] = j == 0
+                    ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Yrotation, BvhChannel.Xrotation }
+                    : new[] { BvhChannel.Zrotation, BvhChannel.Yrotation, BvhChannel.Xrotation };
+                endSites[j] = hasChild[j] ? Array.Empty<Vector3D>() : new[] { Vector3D.Zero };
+            }
+
+            return new BvhAnimation(motion, channels, endSites, name);
+        }
+
         /// <summary>Creates an animation; <paramref name="jointChannels"/> has one entry per joint.</summary>
         /// <param name="motion">The motion.</param>
         /// <param name="jointChannels">Per joint, its channels in CHANNELS-line order: 3 rotations, 3 positions, or all 6.</param>

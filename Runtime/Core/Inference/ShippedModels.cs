@@ -4,9 +4,10 @@ using System.IO;
 namespace DeltaInterpolator.Core.Inference
 {
     /// <summary>
-    /// The models shipped in the package, and the one rule that finds them: a path relative to the
-    /// package root, looked up from the working directory, then from the running tool's folder upwards
-    /// (a tool built inside a checkout finds the checkout's models from anywhere).
+    /// The models shipped in the package, and the one rule that finds them (and any other package file, such
+    /// as the demo clip): a path relative to the package root, looked up from the working directory upwards,
+    /// then from the running tool's folder upwards (a tool built inside a checkout finds the checkout's
+    /// files from anywhere).
     /// </summary>
     public static class ShippedModels
     {
@@ -27,12 +28,15 @@ namespace DeltaInterpolator.Core.Inference
         {
             if (relativePath == null) throw new ArgumentNullException(nameof(relativePath));
             if (File.Exists(relativePath)) return relativePath;
-            string? dir = AppContext.BaseDirectory;
-            while (!string.IsNullOrEmpty(dir))
+            foreach (string? start in new[] { Directory.GetCurrentDirectory(), AppContext.BaseDirectory })
             {
-                string candidate = Path.Combine(dir, relativePath);
-                if (File.Exists(candidate)) return candidate;
-                dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar));
+                string? dir = start;
+                while (!string.IsNullOrEmpty(dir))
+                {
+                    string candidate = Path.Combine(dir, relativePath);
+                    if (File.Exists(candidate)) return candidate;
+                    dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar));
+                }
             }
 
             return relativePath;

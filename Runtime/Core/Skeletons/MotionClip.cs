@@ -42,6 +42,23 @@ namespace DeltaInterpolator.Core.Skeletons
             LocalRotations = localRotations;
         }
 
+        /// <summary>Frames <paramref name="start"/>..start + count − 1 as a clip of their own (copies).</summary>
+        /// <exception cref="ArgumentOutOfRangeException">The frames are not all in the clip.</exception>
+        public MotionClip Excerpt(int start, int count)
+        {
+            if (start < 0 || count < 1 || start + count > FrameCount)
+            {
+                throw new ArgumentOutOfRangeException(nameof(count), $"frames {start}..{start + count - 1} of a {FrameCount}-frame clip");
+            }
+
+            int j = Skeleton.JointCount;
+            var positions = new double[count * j * 3];
+            var rotations = new double[count * j * 4];
+            Array.Copy(LocalPositions, start * j * 3, positions, 0, positions.Length);
+            Array.Copy(LocalRotations, start * j * 4, rotations, 0, rotations.Length);
+            return new MotionClip(Skeleton, count, FrameTime, positions, rotations);
+        }
+
         /// <summary>Creates an empty-motion clip of <paramref name="frameCount"/> frames: offsets and identity rotations.</summary>
         public static MotionClip CreateRestPose(Skeleton skeleton, int frameCount, double frameTime)
         {

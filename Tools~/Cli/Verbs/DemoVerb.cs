@@ -5,11 +5,13 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Text;
+using DeltaInterpolator.Cli.Baking;
 using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Skeletons;
+using DeltaInterpolator.Core.Workflows;
 using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.OnnxRuntime;
 using DeltaInterpolator.Preview;
@@ -79,14 +81,13 @@ namespace DeltaInterpolator.Cli.Verbs
         {
             var total = Stopwatch.StartNew();
             bool force = parse.GetValue(_output.Force);
-            string? root = FindRoot();
-            if (root == null)
+            string sample = ShippedModels.Find(Sample);
+            if (!File.Exists(sample))
             {
                 throw new CliErrors.UsageException($"{Sample}: not found above the current folder ({Directory.GetCurrentDirectory()}) nor above the tool ({AppContext.BaseDirectory}); expected to run inside the package checkout, which ships the demo clip");
             }
 
-            string sample = Path.Combine(root, Sample);
-            string modelPath = parse.GetValue(_model) ?? ShippedModels.Find(Path.Combine(root, ShippedModel));
+            string modelPath = parse.GetValue(_model) ?? ShippedModels.Find(ShippedModel);
             if (!File.Exists(modelPath)) throw new CliErrors.UsageException($"{modelPath}: no such file; expected an exported model (NAME.onnx), e.g. {ShippedModel}");
             string folder = parse.GetValue(_out) ?? Path.Combine("out", "demo-" + DateTime.Now.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture));
 
@@ -97,54 +98,48 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"{folder}: folder exists and is not empty; expected a new or empty folder, or --force to write the demo's files into it");
             }
 
-            string truthPath = Path.Combine(folder, "ground-truth.bvh");
-            string slerpPath = Path.Combine(folder, "slerp.bvh");
-            string modelBvh = Path.Combine(folder, "model.bvh");
-            string onSourcePath = Path.Combine(folder, "model-on-source.bvh");
+            string[] bvhs = { "ground-truth.bvh", "slerp.bvh", "model.bvh", "model-on-source.bvh" };
+            for (int i = 0; i < bvhs.Length; i++) bvhs[i] = OutputFile.Check(Path.Combine(folder, bvhs[i]), force, sample, modelPath);
             string htmlPath = Path.Combine(folder, "preview.html");
             string pngPath = Path.Combine(folder, "preview.png");
-            foreach (string path in new[] { truthPath, slerpPath, modelBvh, onSourcePath })
-            {
-                OutputFile.Check(path, force, sample, modelPath);
-            }
-
-            BakeVerb.CheckPreviewOutputs(htmlPath, pngPath, new[] { truthPath, slerpPath, modelBvh, onSourcePath }, force, sample, modelPath);
+            BakePreview.CheckOutputs(htmlPath, pngPath, bvhs, force, sample, modelPath);
 
             BvhAnimation animation = BvhReader.Read(sample);
-            using var model = new Inbetweener(OnnxRuntimeBackend.Load(modelPath, new OnnxRuntimeOptions { IntraOpThreads = 1 }));
+            using Inbetweener model = ModelLoader.Load(new OnnxModelFiles(modelPath, new OnnxRuntimeOptions { IntraOpThreads = 1 }), LazyGraphs.None);
             int[] keys = DemoKeys(animation.Motion, model.Contract);
-            BakeOutcome outcome = BakeVerb.BakeBoth(animation, sample, keys, model, null, true, ReferenceFrame);
+            BakeRun run = BakeInput.Bake(animation, sample, keys, model.Contract, BakeInput.ModelAndSlerp(model, null, true, null), ReferenceFrame, null);
+            MethodBake modelBake = run["Model"], slerpBake = run["SLERP"];
 
             Directory.CreateDirectory(folder);
-            WriteBvh(RetargetVerb.ModelAnimation(BakeVerb.Excerpt(outcome.GroundTruthOnModel, 0, outcome.ModelOnModel.FrameCount), truthPath), truthPath);
-            WriteBvh(RetargetVerb.ModelAnimation(outcome.SlerpOnModel, slerpPath), slerpPath);
-            WriteBvh(RetargetVerb.ModelAnimation(outcome.ModelOnModel, modelBvh), modelBvh);
-            WriteBvh(new BvhAnimation(outcome.ModelOut, animation.JointChannels, animation.EndSites, onSourcePath), onSourcePath);
+            WriteBvh(BvhAnimation.ForSkeleton(run.GroundTruthOnModel.Excerpt(0, modelBake.OnModel.FrameCount), bvhs[0]), bvhs[0]);
+            WriteBvh(BvhAnimation.ForSkeleton(slerpBake.OnModel, bvhs[1]), bvhs[1]);
+            WriteBvh(BvhAnimation.ForSkeleton(modelBake.OnModel, bvhs[2]), bvhs[2]);
+            WriteBvh(new BvhAnimation(modelBake.OnRig, animation.JointChannels, animation.EndSites, bvhs[3]), bvhs[3]);
 
-            BakeAccuracy modelScore = BakeAccuracy.Measure(animation.Motion, outcome.ModelOut, keys);
-            BakeAccuracy slerpScore = BakeAccuracy.Measure(animation.Motion, outcome.SlerpOut, keys);
-            BakeAccuracy modelOnModel = BakeAccuracy.Measure(outcome.GroundTruthOnModel, outcome.ModelOnModel, outcome.ModelKeys);
-            BakeAccuracy slerpOnModel = BakeAccuracy.Measure(outcome.GroundTruthOnModel, outcome.SlerpOnModel, outcome.ModelKeys);
+            BakeScores scores = BakeScores.Measure(animation.Motion, run);
+            BakeAccuracy modelOnModel = BakeAccuracy.Measure(run.GroundTruthOnModel, modelBake.OnModel, run.ModelKeys);
+            BakeAccuracy slerpOnModel = BakeAccuracy.Measure(run.GroundTruthOnModel, slerpBake.OnModel, run.ModelKeys);
 
             var table = new Table().Border(TableBorder.Rounded)
-                .Title(Markup.Escape($"{Path.GetFileName(sample)}: error on the {modelScore.Frames:N0} non-key frames of the clip (lower is better)"));
+                .Title(Markup.Escape($"{Path.GetFileName(sample)}: error on the {scores["Model"].Accuracy.Frames:N0} non-key frames of the clip (lower is better)"));
             table.AddColumn("Method");
             table.AddColumn(new TableColumn("Joint pos. error (file units)").RightAligned());
             table.AddColumn(new TableColumn("L2Q").RightAligned());
             table.AddColumn(new TableColumn("On model skeleton (its units)").RightAligned());
             table.AddColumn(new TableColumn("Bake (s)").RightAligned());
-            AddRow(table, "SLERP", slerpScore, slerpOnModel, outcome.SlerpSeconds);
-            AddRow(table, "Model", modelScore, modelOnModel, outcome.ModelSeconds);
+            AddRow(table, "SLERP", scores["SLERP"].Accuracy, slerpOnModel, slerpBake.Seconds);
+            AddRow(table, "Model", scores["Model"].Accuracy, modelOnModel, modelBake.Seconds);
             AnsiConsole.Write(table);
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "{0} frames at {1:0.##} fps, {2} keys every {3} frames ({4} model frames, {5:0.##} s); {6}",
                 animation.Motion.FrameCount, 1 / animation.Motion.FrameTime, keys.Length, keys[1] - keys[0], ModelFramesBetweenKeys,
-                ModelFramesBetweenKeys / model.Contract.FramesPerSecond, outcome.Seam.Description)));
+                ModelFramesBetweenKeys / model.Contract.FramesPerSecond, run.Rig.Description)));
             AnsiConsole.MarkupLine(Markup.Escape($"Model: {modelPath}; errors between the keys against the original CMU frames (model results mapped back) and against the retargeted clip on the model's skeleton"));
-            if (outcome.Seam is SkeletonRetargeting retargeted) AnsiConsole.MarkupLine(Markup.Escape(BakeVerb.KeyLine(retargeted)));
-            foreach (string warning in outcome.ModelPlan.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(warning));
+            string? keyLine = BakeInput.KeyLine(run.Rig);
+            if (keyLine != null) AnsiConsole.MarkupLine(Markup.Escape(keyLine));
+            foreach (string warning in modelBake.Plan.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(warning));
 
-            BakeVerb.WritePreview(animation, keys, outcome, htmlPath, pngPath, force);
+            BakePreview.Write(animation, run, htmlPath, pngPath, force);
             AnsiConsole.MarkupLine(Markup.Escape($"wrote into {Path.GetFullPath(folder)}:"));
             foreach (string path in Directory.EnumerateFiles(folder).OrderBy(p => p, StringComparer.Ordinal))
             {
@@ -183,22 +178,6 @@ namespace DeltaInterpolator.Cli.Verbs
                 using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
                 BvhWriter.Write(animation, writer);
             });
-        }
-
-        /// <summary>The package root holding the demo clip: above the current folder, else above the tool's own files.</summary>
-        internal static string? FindRoot()
-        {
-            foreach (string start in new[] { Directory.GetCurrentDirectory(), AppContext.BaseDirectory })
-            {
-                string? dir = start;
-                while (!string.IsNullOrEmpty(dir))
-                {
-                    if (File.Exists(Path.Combine(dir, Sample))) return dir;
-                    dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
-                }
-            }
-
-            return null;
         }
     }
 }

@@ -174,7 +174,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 double frameTime = 1.0 / (fps ?? contract.FramesPerSecond);
                 // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the same rate, kept as written.
                 MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, input) : onModel;
-                result = ModelAnimation(resampled, output);
+                result = BvhAnimation.ForSkeleton(resampled, output);
             }
             else
             {
@@ -268,25 +268,6 @@ namespace DeltaInterpolator.Cli.Verbs
             var rotations = new double[4 * j];
             for (int i = 0; i < rotations.Length; i++) rotations[i] = pose.LocalRotations[i];
             return new MotionClip(skeleton, 1, frameTime, positions, rotations);
-        }
-
-        /// <summary>The model-skeleton clip as a BVH in LaFAN1's layout: root XYZ position + ZYX rotation, joints ZYX, End Sites at the leaves.</summary>
-        internal static BvhAnimation ModelAnimation(MotionClip motion, string name)
-        {
-            Skeleton skeleton = motion.Skeleton;
-            var channels = new BvhChannel[skeleton.JointCount][];
-            var endSites = new Vector3D[skeleton.JointCount][];
-            var hasChild = new bool[skeleton.JointCount];
-            for (int j = 1; j < skeleton.JointCount; j++) hasChild[skeleton.Parents[j]] = true;
-            for (int j = 0; j < skeleton.JointCount; j++)
-            {
-                channels[j] = j == 0
-                    ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Yrotation, BvhChannel.Xrotation }
-                    : new[] { BvhChannel.Zrotation, BvhChannel.Yrotation, BvhChannel.Xrotation };
-                endSites[j] = hasChild[j] ? Array.Empty<Vector3D>() : new[] { Vector3D.Zero };
-            }
-
-            return new BvhAnimation(motion, channels, endSites, name);
         }
 
         private static void PrintSummary(string input, BvhAnimation source, SkeletonMap toModel, SkeletonMap? fromModel, int? referenceFrame, bool scaleGiven,

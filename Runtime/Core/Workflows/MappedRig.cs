@@ -1,17 +1,17 @@
 using System;
 using System.Globalization;
-using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
-namespace DeltaInterpolator.Cli.Verbs
+namespace DeltaInterpolator.Core.Workflows
 {
     /// <summary>
-    /// <c>bake</c> on any humanoid BVH: the input is moved onto the model's skeleton with a
+    /// A bake on any humanoid rig: its motion is moved onto the model's skeleton with a
     /// <see cref="SkeletonMap"/> (source reference: its default pose or a given frame; target: the model's
-    /// T-pose), brought to the model's frame rate, baked there, and mapped back onto the input's skeleton
+    /// T-pose), brought to the model's frame rate, baked there, and mapped back onto the rig's skeleton
     /// and rate.
     /// </summary>
     /// <remarks>
@@ -23,14 +23,14 @@ namespace DeltaInterpolator.Cli.Verbs
     /// keys), so the non-key frames stay an honest ground truth. The output's key frames are the input's,
     /// copied exactly; <see cref="KeyRoundTripDegrees"/> says how far the map's round trip was from them.
     /// </remarks>
-    internal sealed class SkeletonRetargeting : IBakeRetargeting
+    public sealed class MappedRig : IRigRetargeting
     {
         private readonly SkeletonMap _map;
         private readonly double _modelFrameTime;
         private readonly double _inputFrameTime;
         private readonly string _inputPath;
 
-        private SkeletonRetargeting(SkeletonMap map, double modelFrameTime, double inputFrameTime, string inputPath, string reference)
+        private MappedRig(SkeletonMap map, double modelFrameTime, double inputFrameTime, string inputPath, string reference)
         {
             _map = map;
             _inputFrameTime = inputFrameTime;
@@ -48,17 +48,22 @@ namespace DeltaInterpolator.Cli.Verbs
         /// <summary>The map between the input's skeleton and the model's.</summary>
         public SkeletonMap Map => _map;
 
+        SkeletonMap? IRigRetargeting.Map => _map;
+
+        /// <inheritdoc />
+        public double LegLength => _map.SourceLegLength;
+
         /// <summary>The largest angle (degrees) between a mapped-back key rotation and the input's, before the input's were copied in (round-off: ~1e-13 on the CMU demo clip).</summary>
         public double KeyRoundTripDegrees { get; private set; }
 
         /// <summary>Builds the map for <paramref name="input"/> onto <paramref name="contract"/>'s skeleton.</summary>
         /// <param name="contract">The model's contract (skeleton, frame rate).</param>
-        /// <param name="input">The input file's animation.</param>
+        /// <param name="input">The rig's clip.</param>
         /// <param name="referenceFrame">The input frame that is its reference pose, or null for <see cref="ReferencePose.Default"/>.</param>
         /// <param name="inputPath">The input's path, for messages.</param>
         /// <param name="jointMap">A user joint map, or null for the best built-in one.</param>
-        /// <exception cref="CliErrors.UsageException">Joints missing, or the reference frame is not a frame of the file.</exception>
-        public static SkeletonRetargeting Create(ModelContract contract, BvhAnimation input, int? referenceFrame, string inputPath, JointMap? jointMap = null)
+        /// <exception cref="JointMapException">Joints missing, or the reference frame is not a frame of the clip.</exception>
+        public static MappedRig Create(ModelContract contract, MotionClip input, int? referenceFrame, string inputPath, JointMap? jointMap = null)
         {
             ReferencePose source;
             if (referenceFrame == null)
@@ -67,34 +72,26 @@ namespace DeltaInterpolator.Cli.Verbs
             }
             else
             {
-                int count = input.Motion.FrameCount;
+                int count = input.FrameCount;
                 if (referenceFrame.Value < 0 || referenceFrame.Value >= count)
                 {
-                    throw new CliErrors.UsageException($"{inputPath}: --reference-frame {referenceFrame.Value} is not a frame of the file; expected 0 to {count - 1}");
+                    throw new JointMapException(inputPath, $"reference frame {referenceFrame.Value} is not a frame of the file", $"expected 0 to {count - 1}");
                 }
 
-                source = ReferencePose.FromFrame(input.Motion, referenceFrame.Value);
+                source = ReferencePose.FromFrame(input, referenceFrame.Value);
             }
 
-            try
-            {
-                SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath);
-                return new SkeletonRetargeting(map, 1.0 / contract.FramesPerSecond, input.Motion.FrameTime, inputPath,
-                    referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));
-            }
-            catch (JointMapException e)
-            {
-                throw new CliErrors.UsageException(e.Message);
-            }
+            SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath);
+            return new MappedRig(map, 1.0 / contract.FramesPerSecond, input.FrameTime, inputPath,
+                referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));
         }
 
         /// <inheritdoc />
-        public int[] KeysToModel(int[] inputKeys) => ModelKeys(inputKeys, _inputFrameTime);
+        public int[] KeysToModel(int[] rigKeys) => ModelKeys(rigKeys, _inputFrameTime);
 
         /// <inheritdoc />
-        public MotionClip ToModel(BvhAnimation input, int[] inputKeys)
+        public MotionClip ToModel(MotionClip motion, int[] inputKeys)
         {
-            MotionClip motion = input.Motion;
             CheckKeys(inputKeys, motion.FrameCount);
             int[] modelKeys = ModelKeys(inputKeys, motion.FrameTime);
             MotionClip onModel = _map.ToTarget(motion);
@@ -112,9 +109,8 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         /// <inheritdoc />
-        public MotionClip FromModel(MotionClip baked, BvhAnimation input, int[] inputKeys)
+        public MotionClip FromModel(MotionClip baked, MotionClip source, int[] inputKeys)
         {
-            MotionClip source = input.Motion;
             int[] modelKeys = ModelKeys(inputKeys, source.FrameTime);
             int first = inputKeys[0], count = inputKeys[inputKeys.Length - 1] - first + 1;
             int js = _map.Source.JointCount, jt = _map.Target.JointCount;
@@ -168,9 +164,9 @@ namespace DeltaInterpolator.Cli.Verbs
                 {
                     // BVH files round their frame time (CMU: 0.008333 s), so 4.0002 input frames per model frame means 4.
                     int apart = (int)Math.Ceiling(_modelFrameTime / inputFrameTime - 1e-3);
-                    throw new CliErrors.UsageException(string.Format(CultureInfo.InvariantCulture,
-                        "{0}: keys {1} and {2} fall on the same frame at the model's {3:0.##} fps; expected keys at least {4} frames apart",
-                        _inputPath, inputKeys[i - 1], inputKeys[i], 1 / _modelFrameTime, apart));
+                    throw new KeyLayoutException(string.Format(CultureInfo.InvariantCulture,
+                        "keys {0} and {1} fall on the same frame at the model's {2:0.##} fps", inputKeys[i - 1], inputKeys[i], 1 / _modelFrameTime),
+                        string.Format(CultureInfo.InvariantCulture, "expected keys at least {0} frames apart", apart));
                 }
             }
 
@@ -179,17 +175,17 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private void CheckKeys(int[] keys, int frameCount)
         {
-            if (keys.Length < 2) throw new CliErrors.UsageException($"{_inputPath}: {keys.Length} key; expected at least two keys");
+            if (keys.Length < 2) throw new KeyLayoutException($"{keys.Length} key", "expected at least two keys");
             for (int i = 0; i < keys.Length; i++)
             {
                 if (keys[i] < 0 || keys[i] >= frameCount)
                 {
-                    throw new CliErrors.UsageException($"{_inputPath}: key frame {keys[i]} is outside the file's frames 0..{frameCount - 1}; expected key frames inside them");
+                    throw new KeyLayoutException($"key frame {keys[i]} is outside the file's frames 0..{frameCount - 1}", "expected key frames inside them");
                 }
 
                 if (i > 0 && keys[i] <= keys[i - 1])
                 {
-                    throw new CliErrors.UsageException($"{_inputPath}: key {keys[i]} after {keys[i - 1]}; expected strictly increasing key frames");
+                    throw new KeyLayoutException($"key {keys[i]} after {keys[i - 1]}", "expected strictly increasing key frames");
                 }
             }
         }

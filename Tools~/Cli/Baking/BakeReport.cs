@@ -4,9 +4,10 @@ using System.Text;
 using System.Text.Json;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Workflows;
 using DeltaInterpolator.Evaluation.Baking;
 
-namespace DeltaInterpolator.Cli.Verbs
+namespace DeltaInterpolator.Cli.Baking
 {
     /// <summary>
     /// <c>bake --json</c>: one file's scores per method, in the units users compare across files and rigs
@@ -20,10 +21,10 @@ namespace DeltaInterpolator.Cli.Verbs
         /// <summary>Report format version (bump when a field changes meaning).</summary>
         public const int Version = 1;
 
-        public static string Json(string input, BvhAnimation animation, int[] inputKeys, BakeOutcome outcome, ModelContract contract, string modelPath,
-            BakeAccuracy model, BakeAccuracy slerp, BakeFeet.Scores skating, bool feetLocked)
+        public static string Json(string input, BvhAnimation animation, BakeRun run, BakeScores scores, ModelContract contract, string modelPath, bool feetLocked)
         {
-            double leg = BakeInput.LegLength(outcome.Seam, contract, animation);
+            double leg = scores.LegLength;
+            MethodScore model = scores["Model"], slerp = scores["SLERP"];
             using var buffer = new MemoryStream();
             using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
             {
@@ -33,17 +34,17 @@ namespace DeltaInterpolator.Cli.Verbs
                 w.WriteNumber("frames", animation.Motion.FrameCount);
                 w.WriteNumber("fps", Math.Round(1.0 / animation.Motion.FrameTime, 6));
                 w.WriteStartArray("keys");
-                foreach (int k in inputKeys) w.WriteNumberValue(k);
+                foreach (int k in run.RigKeys) w.WriteNumberValue(k);
                 w.WriteEndArray();
-                w.WriteNumber("non_key_frames", model.Frames);
+                w.WriteNumber("non_key_frames", model.Accuracy.Frames);
                 w.WriteNumber("leg_length", leg);
-                w.WriteString("retargeting", outcome.Seam.Description);
+                w.WriteString("retargeting", run.Rig.Description);
                 w.WriteString("feet", feetLocked ? "lock" : "off");
-                w.WriteNumber("foot_contact_samples", skating.Truth.ContactSamples);
-                Skating(w, "ground_truth_foot_skating", skating.Truth);
+                w.WriteNumber("foot_contact_samples", scores.TruthSkating.ContactSamples);
+                Skating(w, "ground_truth_foot_skating", scores.TruthSkating);
                 w.WriteStartObject("methods");
-                Method(w, "model", contract.Name, modelPath, model, leg, outcome.ModelSeconds, skating.Model);
-                Method(w, "slerp", "SLERP", null, slerp, leg, outcome.SlerpSeconds, skating.Slerp);
+                Method(w, "model", contract.Name, modelPath, model, leg, run["Model"].Seconds);
+                Method(w, "slerp", "SLERP", null, slerp, leg, run["SLERP"].Seconds);
                 w.WriteEndObject();
                 w.WriteEndObject();
             }
@@ -58,8 +59,9 @@ namespace DeltaInterpolator.Cli.Verbs
             else w.WriteNull(key);
         }
 
-        private static void Method(Utf8JsonWriter w, string key, string name, string? path, BakeAccuracy a, double leg, double seconds, FootSkating skating)
+        private static void Method(Utf8JsonWriter w, string key, string name, string? path, MethodScore score, double leg, double seconds)
         {
+            BakeAccuracy a = score.Accuracy;
             if (!double.IsFinite(a.MeanPositionError) || !double.IsFinite(a.L2Q))
             {
                 throw new CliErrors.UsageException($"{name}: the bake gave non-finite errors; expected finite motion values in the input");
@@ -73,7 +75,7 @@ namespace DeltaInterpolator.Cli.Verbs
             w.WriteNumber("l2q", a.L2Q);
             if (double.IsFinite(a.L2P)) w.WriteNumber("l2p", a.L2P);
             else w.WriteNull("l2p");
-            Skating(w, "foot_skating", skating);
+            Skating(w, "foot_skating", score.Skating);
             w.WriteNumber("seconds", seconds);
             w.WriteEndObject();
         }

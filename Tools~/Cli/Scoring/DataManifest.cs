@@ -4,7 +4,7 @@ using System.IO;
 using System.Text.Json;
 using System.Text.RegularExpressions;
 
-namespace DeltaInterpolator.Cli.Verbs
+namespace DeltaInterpolator.Cli.Scoring
 {
     /// <summary>
     /// A folder of BVH files and its per-file facts: the data manifest format that the trainer's

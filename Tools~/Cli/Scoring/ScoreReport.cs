@@ -1,0 +1,75 @@
+using System.Collections.Generic;
+using System.IO;
+using System.Text;
+using System.Text.Json;
+using DeltaInterpolator.Evaluation.Baking;
+
+namespace DeltaInterpolator.Cli.Scoring
+{
+    /// <summary><c>score --json</c>: every file's values, the totals per subject and over all files, each method beside its ratio to SLERP.</summary>
+    internal static class ScoreReport
+    {
+        public static string Json(ScoreSheet sheet, IReadOnlyList<string> modelPaths, int every)
+        {
+            int methods = sheet.Methods.Count;
+            using var buffer = new MemoryStream();
+            using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
+            {
+                void Methods(string key, IReadOnlyList<double> p, IReadOnlyList<double> q)
+                {
+                    w.WriteStartObject(key);
+                    for (int i = 0; i < methods; i++)
+                    {
+                        w.WriteStartObject(i < methods - 1 ? sheet.Methods[i] : "slerp");
+                        w.WriteNumber("position_per_leg", p[i]);
+                        w.WriteNumber("l2q", q[i]);
+                        w.WriteNumber("position_vs_slerp", p[i] / p[methods - 1]);
+                        w.WriteNumber("l2q_vs_slerp", q[i] / q[methods - 1]);
+                        w.WriteEndObject();
+                    }
+
+                    w.WriteEndObject();
+                }
+
+                w.WriteStartObject();
+                w.WriteNumber("every", every);
+                w.WriteStartArray("models");
+                foreach (string p in modelPaths) w.WriteStringValue(p);
+                w.WriteEndArray();
+                w.WriteStartArray("files");
+                foreach (ScoreRow r in sheet.Rows)
+                {
+                    w.WriteStartObject();
+                    w.WriteString("file", r.File);
+                    w.WriteString("group", r.Group);
+                    w.WriteNumber("non_key_frames", r.Frames);
+                    w.WriteNumber("leg_length", r.LegLength);
+                    Methods("methods", r.PositionPerLeg, r.L2Q);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
+                w.WriteStartObject("groups");
+                foreach (var g in sheet.Groups())
+                {
+                    ScoreTotal t = sheet.Total(g.Value);
+                    w.WriteStartObject(g.Key.Length == 0 ? "-" : g.Key);
+                    w.WriteNumber("non_key_frames", t.Frames);
+                    Methods("methods", t.PositionPerLeg, t.L2Q);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndObject();
+                ScoreTotal all = sheet.Total();
+                w.WriteStartObject("total");
+                w.WriteNumber("files", sheet.Rows.Count);
+                w.WriteNumber("non_key_frames", all.Frames);
+                Methods("methods", all.PositionPerLeg, all.L2Q);
+                w.WriteEndObject();
+                w.WriteEndObject();
+            }
+
+            return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
+        }
+    }
+}

@@ -1,0 +1,49 @@
+using System.Collections.Generic;
+using System.Globalization;
+using DeltaInterpolator.Evaluation.Baking;
+using Spectre.Console;
+
+namespace DeltaInterpolator.Cli.Scoring
+{
+    /// <summary><c>score</c>'s table: every file, every subject (when there are several) and all files, each method's values and its ratio to SLERP.</summary>
+    internal static class ScoreTable
+    {
+        public static void Print(ScoreSheet sheet, int every)
+        {
+            int methods = sheet.Methods.Count;
+            var table = new Table().Border(TableBorder.Rounded)
+                .Title($"[bold]Keys every {every} input frames[/]: mean joint position error ÷ leg length, and L2Q, over non-key frames (× SLERP in brackets; lower is better)");
+            table.AddColumn("File");
+            table.AddColumn(new TableColumn("Frames").RightAligned());
+            foreach (string n in sheet.Methods) table.AddColumn(new TableColumn(Markup.Escape(n) + " pos / L2Q").RightAligned());
+            void AddRow(string label, IReadOnlyList<double> p, IReadOnlyList<double> q, int frames, bool bold)
+            {
+                var cells = new List<string> { bold ? $"[bold]{Markup.Escape(label)}[/]" : Markup.Escape(label), frames.ToString("N0", CultureInfo.InvariantCulture) };
+                for (int i = 0; i < methods; i++)
+                {
+                    string cell = string.Format(CultureInfo.InvariantCulture, "{0:0.0000} / {1:0.000}", p[i], q[i]);
+                    if (i < methods - 1) cell += string.Format(CultureInfo.InvariantCulture, " ({0:0.00} / {1:0.00})", p[i] / p[methods - 1], q[i] / q[methods - 1]);
+                    cells.Add(cell);
+                }
+
+                table.AddRow(cells.ToArray());
+            }
+
+            foreach (ScoreRow r in sheet.Rows) AddRow(r.File, r.PositionPerLeg, r.L2Q, r.Frames, false);
+            SortedDictionary<string, List<ScoreRow>> groups = sheet.Groups();
+            groups.Remove(""); // files without a subject are in the total only
+            if (groups.Count > 1)
+            {
+                foreach (var g in groups)
+                {
+                    ScoreTotal t = sheet.Total(g.Value);
+                    AddRow("subject " + g.Key, t.PositionPerLeg, t.L2Q, t.Frames, true);
+                }
+            }
+
+            ScoreTotal all = sheet.Total();
+            AddRow($"all {sheet.Rows.Count} files", all.PositionPerLeg, all.L2Q, all.Frames, true);
+            AnsiConsole.Write(table);
+        }
+    }
+}
