@@ -4,7 +4,7 @@ using DeltaInterpolator.Core.Inference;
 namespace DeltaInterpolator.OnnxRuntime
 {
     /// <summary>
-    /// An exported model's graph files for <see cref="ModelLoader"/>: <c>NAME.onnx</c> (the whole graph)
+    /// An exported model's graph files for <see cref="InbetweenerLoader"/>: <c>NAME.onnx</c> (the whole graph)
     /// and, beside it, <c>NAME.keys.onnx</c> and <c>NAME.frame.onnx</c>, each opened on ONNX Runtime.
     /// </summary>
     public sealed class OnnxModelFiles : IModelGraphs

@@ -2,7 +2,7 @@ using DeltaInterpolator.Core.Inference;
 
 namespace DeltaInterpolator.OnnxRuntime
 {
-    /// <summary>Loads an exported model and its lazy graphs on ONNX Runtime into a Core <see cref="Inbetweener"/> (through <see cref="ModelLoader"/>).</summary>
+    /// <summary>Loads an exported model and its lazy graphs on ONNX Runtime into a Core <see cref="Inbetweener"/> (through <see cref="InbetweenerLoader"/>).</summary>
     public static class OnnxRuntimeInbetweener
     {
         /// <summary>
@@ -14,7 +14,7 @@ namespace DeltaInterpolator.OnnxRuntime
         /// <param name="requireLazy">Fail when the lazy graphs are missing instead of loading without them.</param>
         /// <exception cref="ModelContractException">A file is missing, unreadable or does not fit the contract.</exception>
         public static Inbetweener Load(string path, OnnxRuntimeOptions? options = null, bool requireLazy = false) =>
-            ModelLoader.Load(new OnnxModelFiles(path, options), requireLazy ? LazyGraphs.Required : LazyGraphs.IfPresent);
+            InbetweenerLoader.Load(new OnnxModelFiles(path, options), requireLazy ? LazyGraphs.Required : LazyGraphs.IfPresent);
 
         /// <summary><c>DIR/NAME.onnx</c> → <c>DIR/NAME.{kind}.onnx</c>.</summary>
         public static string LazyPath(string path, string kind) =>

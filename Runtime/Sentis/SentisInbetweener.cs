@@ -51,7 +51,7 @@ namespace DeltaInterpolator.Sentis
                 throw new ArgumentException("the keys and frame graphs need their metadata too");
             }
 
-            return ModelLoader.Load(new AssetGraphs(whole, wholeMetadata, source, backendType, keys, keysMetadata, frame, frameMetadata));
+            return InbetweenerLoader.Load(new AssetGraphs(whole, wholeMetadata, source, backendType, keys, keysMetadata, frame, frameMetadata));
         }
 
         /// <summary>Graphs given as imported assets with their captured metadata.</summary>

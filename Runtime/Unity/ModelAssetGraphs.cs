@@ -4,7 +4,7 @@ using DeltaInterpolator.Core.Inference;
 namespace DeltaInterpolator.Unity
 {
     /// <summary>
-    /// The graphs of an <see cref="InbetweeningModel"/> asset on one engine, for Core's <see cref="ModelLoader"/>
+    /// The graphs of an <see cref="InbetweeningModel"/> asset on one engine, for Core's <see cref="InbetweenerLoader"/>
     /// (the one loader of every front end): the component, the baker window and the Sentis helpers load
     /// models only through <see cref="Load"/>.
     /// </summary>
@@ -33,7 +33,7 @@ namespace DeltaInterpolator.Unity
         /// <exception cref="ModelContractException">A graph is missing, cannot be loaded or does not fit the contract.</exception>
         public static Inbetweener Load(InbetweeningModel model, IInferenceBackendFactory factory, LazyGraphs lazy = LazyGraphs.IfPresent)
         {
-            Inbetweener inbetweener = ModelLoader.Load(new ModelAssetGraphs(model, factory), lazy);
+            Inbetweener inbetweener = InbetweenerLoader.Load(new ModelAssetGraphs(model, factory), lazy);
             inbetweener.Id = model.name;
             inbetweener.DisplayName = model.name;
             return inbetweener;

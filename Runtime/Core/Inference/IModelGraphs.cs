@@ -3,7 +3,7 @@ namespace DeltaInterpolator.Core.Inference
     /// <summary>
     /// Where one exported model's graphs come from on one inference engine: files beside each other for
     /// ONNX Runtime (<c>NAME.onnx</c>, <c>NAME.keys.onnx</c>, <c>NAME.frame.onnx</c>), imported assets for
-    /// Sentis. <see cref="ModelLoader"/> opens them in one order and owns what it opened, so every engine
+    /// Sentis. <see cref="InbetweenerLoader"/> opens them in one order and owns what it opened, so every engine
     /// loads a model by the same rule.
     /// </summary>
     public interface IModelGraphs

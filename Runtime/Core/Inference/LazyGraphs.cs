@@ -1,6 +1,6 @@
 namespace DeltaInterpolator.Core.Inference
 {
-    /// <summary>Whether <see cref="ModelLoader"/> loads a model's keys and frame graphs (lazy decoding, one frame at a time).</summary>
+    /// <summary>Whether <see cref="InbetweenerLoader"/> loads a model's keys and frame graphs (lazy decoding, one frame at a time).</summary>
     public enum LazyGraphs
     {
         /// <summary>Load them when both are there, otherwise the whole graph alone.</summary>

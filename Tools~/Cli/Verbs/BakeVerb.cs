@@ -60,7 +60,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
             var load = Stopwatch.StartNew();
             // The whole graph only: baking runs whole transitions, so the lazy graphs would only cost load time.
-            using Inbetweener model = ModelLoader.Load(new OnnxModelFiles(r.ModelPath, new OnnxRuntimeOptions { IntraOpThreads = r.Threads }), LazyGraphs.None);
+            using Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(r.ModelPath, new OnnxRuntimeOptions { IntraOpThreads = r.Threads }), LazyGraphs.None);
             double loadSeconds = load.Elapsed.TotalSeconds;
             JointMap? jointMap = BakeInput.LoadMap(r.MapPath, animation, model.Contract);
             int[] keys = r.Keys != null

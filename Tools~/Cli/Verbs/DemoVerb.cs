@@ -105,7 +105,7 @@ namespace DeltaInterpolator.Cli.Verbs
             BakePreview.CheckOutputs(htmlPath, pngPath, bvhs, force, sample, modelPath);
 
             BvhAnimation animation = BvhReader.Read(sample);
-            using Inbetweener model = ModelLoader.Load(new OnnxModelFiles(modelPath, new OnnxRuntimeOptions { IntraOpThreads = 1 }), LazyGraphs.None);
+            using Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(modelPath, new OnnxRuntimeOptions { IntraOpThreads = 1 }), LazyGraphs.None);
             int[] keys = DemoKeys(animation.Motion, model.Contract);
             BakeRun run = BakeInput.Bake(animation, sample, keys, model.Contract, BakeInput.ModelAndSlerp(model, null, true, null), ReferenceFrame, null);
             MethodBake modelBake = run["Model"], slerpBake = run["SLERP"];

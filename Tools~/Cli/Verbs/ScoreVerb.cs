@@ -100,7 +100,7 @@ namespace DeltaInterpolator.Cli.Verbs
             var inbetweeners = new List<Inbetweener>();
             try
             {
-                foreach (string m in models) inbetweeners.Add(ModelLoader.Load(new OnnxModelFiles(m, new OnnxRuntimeOptions { IntraOpThreads = 1 }), LazyGraphs.None));
+                foreach (string m in models) inbetweeners.Add(InbetweenerLoader.Load(new OnnxModelFiles(m, new OnnxRuntimeOptions { IntraOpThreads = 1 }), LazyGraphs.None));
                 var names = new List<string>();
                 foreach (Inbetweener ib in inbetweeners) names.Add(ib.Contract.Name);
                 names.Add("SLERP");

@@ -8,12 +8,12 @@ using NUnit.Framework;
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
-    /// <see cref="ModelLoader"/>, the one loader of every engine, on real ONNX Runtime sessions: lazy graphs
+    /// <see cref="InbetweenerLoader"/>, the one loader of every engine, on real ONNX Runtime sessions: lazy graphs
     /// both or neither, <see cref="LazyGraphs.Required"/> refused by name, and a graph that fails to open
     /// leaves no session behind (the ones opened before it are disposed).
     /// </summary>
     [TestFixture]
-    public sealed class ModelLoaderTests
+    public sealed class InbetweenerLoaderTests
     {
         private string _dir = null!;
 
@@ -44,7 +44,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void AllThreeGraphsLoadForLazyDecoding()
         {
-            using Inbetweener model = ModelLoader.Load(new OnnxModelFiles(Copy("whole", "keys", "frame")));
+            using Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(Copy("whole", "keys", "frame")));
             Assert.That(model.KeysContract, Is.Not.Null);
             Assert.That(model.FrameContract, Is.Not.Null);
         }
@@ -54,7 +54,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             var files = new OnnxModelFiles(Copy("whole", "keys"));
             Assert.That(files.HasLazyGraphs, Is.False);
-            using Inbetweener model = ModelLoader.Load(files);
+            using Inbetweener model = InbetweenerLoader.Load(files);
             Assert.That(model.KeysContract, Is.Null);
         }
 
@@ -62,7 +62,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void NoneLoadsTheWholeGraphEvenWhenTheLazyOnesAreThere()
         {
             var files = new Recording(new OnnxModelFiles(Copy("whole", "keys", "frame")));
-            using Inbetweener model = ModelLoader.Load(files, LazyGraphs.None);
+            using Inbetweener model = InbetweenerLoader.Load(files, LazyGraphs.None);
             Assert.That(files.Opened, Is.EqualTo(new[] { ModelGraphKind.Whole }));
         }
 
@@ -70,7 +70,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void RequiredLazyGraphsAreRefusedByNameBeforeAnythingOpens()
         {
             var files = new Recording(new OnnxModelFiles(Copy("whole")));
-            var e = Assert.Throws<ModelContractException>(() => ModelLoader.Load(files, LazyGraphs.Required));
+            var e = Assert.Throws<ModelContractException>(() => InbetweenerLoader.Load(files, LazyGraphs.Required));
             Assert.That(e!.Message, Does.Contain("m.onnx"));
             Assert.That(e.Message, Does.Contain("NAME.keys.onnx"));
             Assert.That(files.Opened, Is.Empty);
@@ -82,7 +82,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             string path = Copy("whole", "keys");
             File.WriteAllBytes(Path.Combine(_dir, "m.frame.onnx"), new byte[] { 1, 2, 3, 4, 5 }); // not a model
             var files = new Recording(new OnnxModelFiles(path));
-            Assert.Throws<ModelContractException>(() => ModelLoader.Load(files));
+            Assert.Throws<ModelContractException>(() => InbetweenerLoader.Load(files));
             Assert.That(files.Opened, Is.EqualTo(new[] { ModelGraphKind.Whole, ModelGraphKind.Keys, ModelGraphKind.Frame }));
             Assert.That(files.Backends.Count, Is.EqualTo(2));
             Assert.That(files.Backends.TrueForAll(b => b.Disposed), Is.True, "the whole and keys sessions must be released");

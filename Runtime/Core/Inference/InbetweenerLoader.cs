@@ -8,7 +8,7 @@ namespace DeltaInterpolator.Core.Inference
     /// that fails to open or to fit disposes everything opened before it, so a failed load leaks no
     /// engine session.
     /// </summary>
-    public static class ModelLoader
+    public static class InbetweenerLoader
     {
         /// <summary>Loads the model <paramref name="graphs"/> describes.</summary>
         /// <param name="graphs">Where the graphs come from (a file set, imported assets).</param>
