@@ -51,6 +51,16 @@ namespace DeltaInterpolator.Cli
                 WriteLine(e.Message);
                 return BadInput;
             }
+            catch (Core.Retargeting.JointMapException e)
+            {
+                WriteLine(e.Message); // names the rig and the joints
+                return BadInput;
+            }
+            catch (Core.Workflows.MotionRequestException e)
+            {
+                WriteLine(e.Message); // names the file, the frame and the frames it has
+                return BadInput;
+            }
             catch (FileNotFoundException e)
             {
                 WriteLine($"{e.FileName ?? "file"}: no such file; expected an existing file");

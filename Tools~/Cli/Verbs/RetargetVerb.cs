@@ -1,19 +1,16 @@
 using System;
-using System.Collections.Generic;
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Text;
-using DeltaInterpolator.Core;
+using DeltaInterpolator.Cli.Retargeting;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Retargeting;
-using DeltaInterpolator.Core.Rotations;
-using DeltaInterpolator.Core.Skeletons;
+using DeltaInterpolator.Core.Workflows;
 using DeltaInterpolator.OnnxRuntime;
-using Spectre.Console;
 
 namespace DeltaInterpolator.Cli.Verbs
 {
@@ -158,34 +155,27 @@ namespace DeltaInterpolator.Cli.Verbs
             OutputFile.Check(output, parse.GetValue(_output.Force), input, toModel ? null : to, mapPath, modelPath);
 
             BvhAnimation source = BvhReader.Read(input);
-            ModelContract contract = ReadContract(modelPath);
-            ReferencePose sourceReference = Reference(source, parse.GetValue(_referenceFrame), "--reference-frame", input);
-            ReferencePose modelReference = ReferencePose.ModelTPose(contract.Skeleton);
+            ModelContract contract;
+            using (Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(modelPath), LazyGraphs.None)) contract = model.Contract;
             JointMap? userMap = mapPath == null ? null : JointMap.Load(mapPath, JointMap.Detect(source.Skeleton, contract.Skeleton));
             if (userMap != null) MapWarnings.UnknownTargets(userMap, contract.Skeleton, mapPath!);
-            SkeletonMap toModelMap = Map(sourceReference, modelReference, userMap, input, scale);
-
-            MotionClip sourceMotion = Trim(source.Motion, fromFrame, inputFps, input);
-            MotionClip onModel = toModelMap.ToTarget(sourceMotion);
+            var request = new RetargetRequest
+            {
+                ReferenceFrame = parse.GetValue(_referenceFrame), FromFrame = fromFrame ?? 0, InputFps = inputFps, OutputFps = fps, Scale = scale,
+                Map = userMap, TargetReferenceFrame = parse.GetValue(_targetReferenceFrame),
+            };
+            RetargetResult retargeted;
             BvhAnimation result;
-            SkeletonMap? fromModelMap = null;
             if (toModel)
             {
-                double frameTime = 1.0 / (fps ?? contract.FramesPerSecond);
-                // BVH files round their frame time (LaFAN1: 0.033333): within 0.01 % it is the same rate, kept as written.
-                MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, input) : onModel;
-                result = BvhAnimation.ForSkeleton(resampled, output);
+                retargeted = MotionRetargeting.ToModel(source.Motion, input, contract, request);
+                result = BvhAnimation.ForSkeleton(retargeted.Motion, output);
             }
             else
             {
                 BvhAnimation other = BvhReader.Read(to);
-                ReferencePose otherReference = Reference(other, parse.GetValue(_targetReferenceFrame), "--target-reference-frame", to);
-                fromModelMap = Map(otherReference, modelReference, userMap, to);
-                MotionClip otherPose = OneFrame(other.Skeleton, otherReference, source.Motion.FrameTime);
-                MotionClip onOther = fromModelMap.ToSource(onModel, otherPose);
-                if (inputFps.HasValue && !fps.HasValue) onOther = MotionResampler.Resample(onOther, source.Motion.FrameTime, input);
-                if (fps.HasValue) onOther = MotionResampler.Resample(onOther, 1.0 / fps.Value, input);
-                result = new BvhAnimation(onOther, other.JointChannels, other.EndSites, output);
+                retargeted = MotionRetargeting.ToRig(source.Motion, input, other.Motion, to, contract, request);
+                result = new BvhAnimation(retargeted.Motion, other.JointChannels, other.EndSites, output);
             }
 
             OutputFile.Write(output, stream =>
@@ -194,133 +184,13 @@ namespace DeltaInterpolator.Cli.Verbs
                 BvhWriter.Write(result, writer);
             });
 
-            PrintSummary(input, source, toModelMap, fromModelMap, parse.GetValue(_referenceFrame), scale.HasValue, fromFrame, inputFps, result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
+            RetargetSummary.Print(input, source, retargeted.ToModel, retargeted.FromModel, request.ReferenceFrame, scale.HasValue, fromFrame, inputFps, result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
             return 0;
-        }
-
-        /// <summary>The input's frames from <paramref name="fromFrame"/> on, at its true frame rate.</summary>
-        private static MotionClip Trim(MotionClip motion, int? fromFrame, double? inputFps, string path)
-        {
-            int first = fromFrame ?? 0;
-            if (first < 0 || first > motion.FrameCount - 2)
-            {
-                throw new CliErrors.UsageException($"{path}: --from-frame {first} leaves fewer than two of the file's {motion.FrameCount} frames; expected 0 to {Math.Max(0, motion.FrameCount - 2)}");
-            }
-
-            double frameTime = inputFps.HasValue ? 1.0 / inputFps.Value : motion.FrameTime;
-            if (first == 0 && !inputFps.HasValue) return motion;
-            int j = motion.Skeleton.JointCount, n = motion.FrameCount - first;
-            var positions = new double[n * j * 3];
-            var rotations = new double[n * j * 4];
-            Array.Copy(motion.LocalPositions, motion.PositionIndex(first, 0), positions, 0, positions.Length);
-            Array.Copy(motion.LocalRotations, motion.RotationIndex(first, 0), rotations, 0, rotations.Length);
-            return new MotionClip(motion.Skeleton, n, frameTime, positions, rotations);
         }
 
         private static void RequireFile(string path, string what)
         {
             InputFile.Check(path, what); // a folder, a named pipe or a device is refused as such, before it is opened
         }
-
-        private static ModelContract ReadContract(string modelPath)
-        {
-            try
-            {
-                using OnnxRuntimeBackend backend = OnnxRuntimeBackend.Load(modelPath);
-                return ModelContract.Read(backend.Description, ModelGraphKind.Whole);
-            }
-            catch (ModelContractException e)
-            {
-                throw new CliErrors.UsageException(e.Message);
-            }
-        }
-
-        private static ReferencePose Reference(BvhAnimation animation, int? frame, string option, string path)
-        {
-            if (frame == null) return ReferencePose.Default(animation.Skeleton);
-            int count = animation.Motion.FrameCount;
-            if (frame.Value < 0 || frame.Value >= count)
-            {
-                throw new CliErrors.UsageException($"{path}: {option} {frame.Value} is not a frame of the file; expected 0 to {count - 1}");
-            }
-
-            return ReferencePose.FromFrame(animation.Motion, frame.Value);
-        }
-
-        private static SkeletonMap Map(ReferencePose source, ReferencePose model, JointMap? userMap, string path, double? scale = null)
-        {
-            try
-            {
-                return SkeletonMap.Create(source, model, userMap, path, scale);
-            }
-            catch (JointMapException e)
-            {
-                throw new CliErrors.UsageException(e.Message);
-            }
-        }
-
-        private static MotionClip OneFrame(Skeleton skeleton, ReferencePose pose, double frameTime)
-        {
-            int j = skeleton.JointCount;
-            var positions = new double[3 * j];
-            skeleton.OffsetSpan.CopyTo(positions);
-            pose.RootPosition.Write(positions, 0);
-            var rotations = new double[4 * j];
-            for (int i = 0; i < rotations.Length; i++) rotations[i] = pose.LocalRotations[i];
-            return new MotionClip(skeleton, 1, frameTime, positions, rotations);
-        }
-
-        private static void PrintSummary(string input, BvhAnimation source, SkeletonMap toModel, SkeletonMap? fromModel, int? referenceFrame, bool scaleGiven,
-            int? fromFrame, double? inputFps, BvhAnimation result, string output, string target, double seconds)
-        {
-            var table = new Table().Border(TableBorder.Rounded).HideHeaders();
-            table.AddColumn("");
-            table.AddColumn("");
-            MotionClip inClip = source.Motion, outClip = result.Motion;
-            table.AddRow("Input", Markup.Escape($"{input}: {source.Skeleton.JointCount} joints, {inClip.FrameCount} frames at {Fps(inClip.FrameTime)} fps"));
-            table.AddRow("Reference pose", referenceFrame.HasValue ? $"frame {referenceFrame.Value}"
-                : HasLafanNames(source.Skeleton) ? "the model's T-pose (LaFAN1 joint names and axes)" : "zero pose (all rotations 0)");
-            table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
-            table.AddRow("Made up (synthesized)", Markup.Escape(toModel.SynthesizedJoints.Count == 0 ? "none"
-                : string.Join(", ", toModel.SynthesizedJoints) + ": the input lacks them; each is a rigid child of its parent at the model's T-pose offset"));
-            table.AddRow(fromModel == null ? "Unmapped input joints" : "Unmapped (from OTHER's reference)", Markup.Escape(toModel.UnmappedSourceJoints.Count == 0 ? "none" : MapWarnings.NameList(toModel.UnmappedSourceJoints)));
-            table.AddRow("Root scale", Markup.Escape(string.Format(CultureInfo.InvariantCulture,
-                "× {0:0.#####} {3}(model leg {1:0.##} ÷ input leg {2:0.###}: root height above the lowest joint in each reference pose)",
-                toModel.RootScale, toModel.TargetLegLength, toModel.SourceLegLength, scaleGiven ? "as given by --scale " : "")));
-            if (fromModel != null)
-            {
-                table.AddRow("Target", Markup.Escape($"{target}: {fromModel.Source.JointCount} joints, map '{fromModel.Map.Name}', root × {(toModel.RootScale / fromModel.RootScale).ToString("0.#####", CultureInfo.InvariantCulture)}"));
-            }
-            else
-            {
-                table.AddRow("Target", Markup.Escape($"model '{target}' skeleton ({toModel.Target.JointCount} joints)"));
-            }
-
-            table.AddRow("Frames", Markup.Escape($"{inClip.FrameCount} at {Fps(inClip.FrameTime)} fps{(fromFrame > 0 ? $" (from frame {fromFrame})" : "")}{(inputFps.HasValue ? $" (read as {Fps(1 / inputFps.Value)} fps)" : "")} → {outClip.FrameCount} at {Fps(outClip.FrameTime)} fps"));
-            table.AddRow("Wrote", Markup.Escape($"{output} ({seconds.ToString("0.00", CultureInfo.InvariantCulture)} s)"));
-            AnsiConsole.Write(table);
-        }
-
-        private static bool HasLafanNames(Skeleton skeleton)
-        {
-            foreach (string name in JointMap.Lafan1.TargetJoints) if (skeleton.IndexOf(name) < 0) return false;
-            return true;
-        }
-
-        private static string Mapped(SkeletonMap map)
-        {
-            var parts = new List<string>();
-            for (int j = 0; j < map.Target.JointCount; j++)
-            {
-                string t = map.Target.Names[j];
-                if (map.IsSynthesized(j)) continue;
-                string s = string.Join("+", map.Map.SourceChain(t)!);
-                if (!string.Equals(s, t, StringComparison.Ordinal)) parts.Add(s + "→" + t);
-            }
-
-            return parts.Count == 0 ? "joints of the same names" : "joints of the same names except " + string.Join(", ", parts);
-        }
-
-        private static string Fps(double frameTime) => (1.0 / frameTime).ToString("0.##", CultureInfo.InvariantCulture);
     }
 }

@@ -1,0 +1,91 @@
+using System;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Workflows
+{
+    /// <summary>
+    /// The retargeting use case (the CLI's <c>retarget</c>, training data preparation): a rig's clip onto the
+    /// model's skeleton at the model's rate, or through the model's skeleton onto another rig, every mapped
+    /// bone's world direction kept, the root scaled by leg length, joints the source lacks synthesized.
+    /// </summary>
+    public static class MotionRetargeting
+    {
+        /// <summary>
+        /// <paramref name="source"/> on the model's skeleton, resampled to <see cref="RetargetRequest.OutputFps"/>
+        /// or the model's rate (a rate within 0.01 % of it is kept as written: BVH files round their frame time).
+        /// </summary>
+        /// <exception cref="JointMapException">Joints the model needs are missing.</exception>
+        /// <exception cref="MotionRequestException">A frame of the request is not a frame of the clip.</exception>
+        public static RetargetResult ToModel(MotionClip source, string sourceName, ModelContract contract, RetargetRequest request)
+        {
+            SkeletonMap toModel = MapToModel(source, sourceName, contract, request);
+            MotionClip onModel = toModel.ToTarget(Trim(source, request, sourceName));
+            double frameTime = 1.0 / (request.OutputFps ?? contract.FramesPerSecond);
+            MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, sourceName) : onModel;
+            return new RetargetResult(resampled, toModel, null);
+        }
+
+        /// <summary>
+        /// <paramref name="source"/> on <paramref name="target"/>'s skeleton (through the model's), at the source's
+        /// rate (its true one with <see cref="RetargetRequest.InputFps"/>) or <see cref="RetargetRequest.OutputFps"/>.
+        /// </summary>
+        /// <exception cref="JointMapException">Joints the model needs are missing on either rig.</exception>
+        /// <exception cref="MotionRequestException">A frame of the request is not a frame of its clip.</exception>
+        public static RetargetResult ToRig(MotionClip source, string sourceName, MotionClip target, string targetName, ModelContract contract, RetargetRequest request)
+        {
+            SkeletonMap toModel = MapToModel(source, sourceName, contract, request);
+            MotionClip onModel = toModel.ToTarget(Trim(source, request, sourceName));
+            ReferencePose targetReference = Reference(target, request.TargetReferenceFrame, "target reference frame", targetName);
+            SkeletonMap fromModel = SkeletonMap.Create(targetReference, ReferencePose.ModelTPose(contract.Skeleton), request.Map, targetName);
+            MotionClip onTarget = fromModel.ToSource(onModel, OneFrame(target.Skeleton, targetReference, source.FrameTime));
+            if (request.InputFps.HasValue && !request.OutputFps.HasValue) onTarget = MotionResampler.Resample(onTarget, source.FrameTime, sourceName);
+            if (request.OutputFps.HasValue) onTarget = MotionResampler.Resample(onTarget, 1.0 / request.OutputFps.Value, sourceName);
+            return new RetargetResult(onTarget, toModel, fromModel);
+        }
+
+        private static SkeletonMap MapToModel(MotionClip source, string sourceName, ModelContract contract, RetargetRequest request)
+        {
+            ReferencePose reference = Reference(source, request.ReferenceFrame, "reference frame", sourceName);
+            return SkeletonMap.Create(reference, ReferencePose.ModelTPose(contract.Skeleton), request.Map, sourceName, request.Scale);
+        }
+
+        /// <summary>The source's frames from <see cref="RetargetRequest.FromFrame"/> on, at its true frame rate.</summary>
+        private static MotionClip Trim(MotionClip motion, RetargetRequest request, string sourceName)
+        {
+            int first = request.FromFrame;
+            if (first < 0 || first > motion.FrameCount - 2)
+            {
+                throw new MotionRequestException(sourceName, $"first frame {first} leaves fewer than two of the file's {motion.FrameCount} frames", $"expected 0 to {Math.Max(0, motion.FrameCount - 2)}");
+            }
+
+            if (first == 0 && !request.InputFps.HasValue) return motion;
+            MotionClip trimmed = motion.Excerpt(first, motion.FrameCount - first);
+            double frameTime = request.InputFps.HasValue ? 1.0 / request.InputFps.Value : motion.FrameTime;
+            return new MotionClip(trimmed.Skeleton, trimmed.FrameCount, frameTime, trimmed.LocalPositions, trimmed.LocalRotations);
+        }
+
+        private static ReferencePose Reference(MotionClip clip, int? frame, string what, string name)
+        {
+            if (frame == null) return ReferencePose.Default(clip.Skeleton);
+            if (frame.Value < 0 || frame.Value >= clip.FrameCount)
+            {
+                throw new MotionRequestException(name, $"{what} {frame.Value} is not a frame of the file", $"expected 0 to {clip.FrameCount - 1}");
+            }
+
+            return ReferencePose.FromFrame(clip, frame.Value);
+        }
+
+        private static MotionClip OneFrame(Skeleton skeleton, ReferencePose pose, double frameTime)
+        {
+            int j = skeleton.JointCount;
+            var positions = new double[3 * j];
+            skeleton.OffsetSpan.CopyTo(positions);
+            pose.RootPosition.Write(positions, 0);
+            var rotations = new double[4 * j];
+            for (int i = 0; i < rotations.Length; i++) rotations[i] = pose.LocalRotations[i];
+            return new MotionClip(skeleton, 1, frameTime, positions, rotations);
+        }
+    }
+}

@@ -1,0 +1,29 @@
+using DeltaInterpolator.Core.Retargeting;
+
+namespace DeltaInterpolator.Core.Workflows
+{
+    /// <summary>What <see cref="MotionRetargeting"/> is asked to do with a clip besides mapping it.</summary>
+    public sealed class RetargetRequest
+    {
+        /// <summary>The source clip's frame that is its reference pose, or null for its default pose.</summary>
+        public int? ReferenceFrame { get; set; }
+
+        /// <summary>The first source frame used (frames before it — a T-pose, conversion artefacts — are dropped).</summary>
+        public int FromFrame { get; set; }
+
+        /// <summary>The source's true frame rate when its header is wrong, or null.</summary>
+        public double? InputFps { get; set; }
+
+        /// <summary>The output's frame rate, or null: the model's on the model's skeleton, the source's on another rig.</summary>
+        public double? OutputFps { get; set; }
+
+        /// <summary>Model units per source unit, or null to scale the root by leg length.</summary>
+        public double? Scale { get; set; }
+
+        /// <summary>A user joint map, or null for the best built-in one.</summary>
+        public JointMap? Map { get; set; }
+
+        /// <summary>For a target rig: its frame that is its reference pose, or null for its default pose.</summary>
+        public int? TargetReferenceFrame { get; set; }
+    }
+}

@@ -1,0 +1,25 @@
+using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Workflows
+{
+    /// <summary>The motion <see cref="MotionRetargeting"/> produced and the maps it went through.</summary>
+    public sealed class RetargetResult
+    {
+        internal RetargetResult(MotionClip motion, SkeletonMap toModel, SkeletonMap? fromModel)
+        {
+            Motion = motion;
+            ToModel = toModel;
+            FromModel = fromModel;
+        }
+
+        /// <summary>The retargeted motion (on the model's skeleton, or on the target rig's).</summary>
+        public MotionClip Motion { get; }
+
+        /// <summary>The source rig → the model's skeleton.</summary>
+        public SkeletonMap ToModel { get; }
+
+        /// <summary>The target rig ↔ the model's skeleton, or null when the target is the model.</summary>
+        public SkeletonMap? FromModel { get; }
+    }
+}
