@@ -4,9 +4,8 @@ using System.CommandLine;
 using System.Globalization;
 using System.IO;
 using System.Linq;
-using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Cli.Presenters;
 using DeltaInterpolator.Core.IO;
-using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Preview;
 using Spectre.Console;
 
@@ -94,7 +93,7 @@ namespace DeltaInterpolator.Cli.Verbs
         {
             var requests = new List<(string Name, string Path)>();
             string? truth = parse.GetValue(_truth);
-            if (truth != null) requests.Add(SplitTrack(truth, "Ground truth", "--truth"));
+            if (truth != null) requests.Add(TrackArgument.Parse(truth, "Ground truth", "--truth"));
             foreach (string file in parse.GetValue(_files) ?? Array.Empty<string>())
             {
                 requests.Add((Path.GetFileNameWithoutExtension(file), file));
@@ -107,7 +106,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     throw new CliErrors.UsageException($"--track {track}: no NAME=; expected NAME=FILE.bvh, e.g. --track SLERP=out/slerp.bvh");
                 }
 
-                requests.Add(SplitTrack(track, "", "--track"));
+                requests.Add(TrackArgument.Parse(track, "", "--track"));
             }
 
             if (requests.Count == 0)
@@ -126,7 +125,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 InputFile.Check(path, "a .bvh file");
             }
 
-            (int Start, int End)? range = ParseFrames(parse.GetValue(_frames));
+            (int Start, int End)? range = FrameRangeArgument.Parse(parse.GetValue(_frames));
             int[] keys = ParseKeys(parse.GetValue(_keys));
             bool force = parse.GetValue(_output.Force);
             string[] inputs = requests.Select(r => r.Path).ToArray();
@@ -139,74 +138,9 @@ namespace DeltaInterpolator.Cli.Verbs
                 ContactSheet.CheckOutputs(pngPath, force, new[] { htmlPath }, inputs);
             }
 
-            var clips = new List<(string Name, MotionClip Clip)>();
-            BvhAnimation? first = null;
-            foreach ((string name, string path) in requests)
-            {
-                BvhAnimation animation = BvhReader.Read(path);
-                if (animation.Motion.FrameCount == 0) throw new CliErrors.UsageException($"{path}: has no frames (Frames: 0); expected at least one frame to show");
-                MotionChecks.RequireFinitePositions(animation.Motion, path, "the motion");
-                if (first == null)
-                {
-                    first = animation;
-                }
-                else
-                {
-                    string? difference = PreviewScene.SkeletonDifference(first.Skeleton, animation.Skeleton);
-                    if (difference != null)
-                    {
-                        throw new CliErrors.UsageException($"{path}: {difference} ({first.SourceName}); expected the same skeleton in every file (retarget first)");
-                    }
-
-                    double a = first.Motion.FrameTime, b = animation.Motion.FrameTime;
-                    if (Math.Abs(a - b) > 1e-6 * a)
-                    {
-                        throw new CliErrors.UsageException(string.Format(CultureInfo.InvariantCulture, "{0}: {1:0.###} fps where {2} has {3:0.###} fps; expected one frame rate in every file", path, 1 / b, first.SourceName, 1 / a));
-                    }
-                }
-
-                clips.Add((name, Slice(animation.Motion, range, path)));
-            }
-
-            int frames = clips.Max(c => c.Clip.FrameCount);
-            int offset = range?.Start ?? 0;
-            int[] sceneKeys = keys.Select(k => k - offset).ToArray();
-            foreach (int key in keys)
-            {
-                if (key - offset < 0 || key - offset >= frames)
-                {
-                    string where = range == null ? $"frames 0..{frames - 1} of the files" : $"the shown frames {offset}..{offset + frames - 1} (--frames)";
-                    throw new CliErrors.UsageException($"--keys: key frame {key} is outside {where}; expected key frames inside them");
-                }
-            }
-
-            string title = Path.GetFileName(requests[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
-            PreviewScene scene = PreviewScene.FromClips(title, clips, sceneKeys, truth != null ? 0 : -1);
+            PreviewScene scene = BvhPreview.Build(requests, range, keys, truth != null);
             PreviewWriter.WriteHtml(scene, htmlPath);
-            SafeLine(string.Format(
-                CultureInfo.InvariantCulture,
-                "wrote {0} ({1:0} KB): {2} track{6}, {3} frames at {4:0.##} fps, {5} key frames",
-                htmlPath,
-                new FileInfo(htmlPath).Length / 1024.0,
-                scene.Tracks.Count,
-                scene.FrameCount,
-                1 / scene.FrameTime,
-                scene.KeyFrames.Count,
-                scene.Tracks.Count == 1 ? "" : "s"));
-            if (scene.GroundTruthTrack >= 0)
-            {
-                for (int t = 0; t < scene.Tracks.Count; t++)
-                {
-                    if (t == scene.GroundTruthTrack) continue;
-                    SafeLine(string.Format(
-                        CultureInfo.InvariantCulture,
-                        "  {0}: mean joint position error {1:0.###} (data units) {2}",
-                        scene.Tracks[t].Name,
-                        scene.MeanErrorBetweenKeys(t),
-                        scene.KeyFrames.Count > 0 ? "on frames between keys" : "over all frames"));
-                }
-            }
-
+            PreviewSummary.Page(scene, htmlPath);
             if (pngPath != null)
             {
                 string? fallback = null;
@@ -220,65 +154,10 @@ namespace DeltaInterpolator.Cli.Verbs
                     written = ContactSheet.Write(scene, pngPath, force, out fallback);
                 }
 
-                SafeLine(fallback ?? string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB)", written, new FileInfo(written).Length / 1024.0));
+                PreviewSummary.Sheet(written, fallback);
             }
 
             return 0;
-        }
-
-        /// <summary>One line on stdout with file and track names made terminal-safe (no raw escapes, no forged lines).</summary>
-        private static void SafeLine(string line) => Console.WriteLine(TerminalText.Safe(line, TerminalText.LineLength));
-
-        private static (string Name, string Path) SplitTrack(string value, string defaultName, string option)
-        {
-            int equals = value.IndexOf('=');
-            if (equals < 0)
-            {
-                return (defaultName.Length > 0 ? defaultName : Path.GetFileNameWithoutExtension(value), value);
-            }
-
-            string name = value.Substring(0, equals).Trim();
-            string path = value.Substring(equals + 1);
-            if (name.Length == 0 || path.Length == 0)
-            {
-                throw new CliErrors.UsageException($"{option} {value}: empty name or file; expected NAME=FILE.bvh");
-            }
-
-            return (name, path);
-        }
-
-        private static MotionClip Slice(MotionClip clip, (int Start, int End)? range, string path)
-        {
-            if (range == null) return clip;
-            (int start, int end) = range.Value;
-            if (start >= clip.FrameCount)
-            {
-                throw new CliErrors.UsageException($"{path}: --frames starts at {start} but the file has {clip.FrameCount} frames; expected a start below {clip.FrameCount}");
-            }
-
-            int last = Math.Min(end, clip.FrameCount - 1);
-            int count = last - start + 1;
-            int j = clip.Skeleton.JointCount;
-            var positions = new double[count * j * 3];
-            var rotations = new double[count * j * 4];
-            Array.Copy(clip.LocalPositions, start * j * 3, positions, 0, positions.Length);
-            Array.Copy(clip.LocalRotations, start * j * 4, rotations, 0, rotations.Length);
-            return new MotionClip(clip.Skeleton, count, clip.FrameTime, positions, rotations);
-        }
-
-        private static (int Start, int End)? ParseFrames(string? text)
-        {
-            if (text == null) return null;
-            string[] parts = text.Split('-');
-            if (parts.Length != 2
-                || !int.TryParse(parts[0].Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out int start)
-                || !int.TryParse(parts[1].Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out int end)
-                || end < start)
-            {
-                throw new CliErrors.UsageException($"--frames {text}: not a frame range; expected START-END with 0 ≤ START ≤ END, e.g. 0-299");
-            }
-
-            return (start, end);
         }
 
         private static int[] ParseKeys(string? text)

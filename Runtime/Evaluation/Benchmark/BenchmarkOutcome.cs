@@ -1,0 +1,65 @@
+using System.Globalization;
+using DeltaInterpolator.Core;
+
+namespace DeltaInterpolator.Evaluation.Benchmark
+{
+    /// <summary>What <see cref="LafanBenchmarkRun.Execute"/> produced: the report, the statistics it used, and what was read and how fast.</summary>
+    public sealed class BenchmarkOutcome
+    {
+        internal BenchmarkOutcome(LafanBenchmarkFolder folder, BenchmarkReport report, BenchmarkStatistics statistics)
+        {
+            Folder = folder;
+            Report = report;
+            Statistics = statistics;
+        }
+
+        /// <summary>The folder the files came from.</summary>
+        public LafanBenchmarkFolder Folder { get; }
+
+        /// <summary>The metric totals per method and length, all finite.</summary>
+        public BenchmarkReport Report { get; }
+
+        /// <summary>The statistics used: loaded, or computed from the training files.</summary>
+        public BenchmarkStatistics Statistics { get; }
+
+        /// <summary>Test files read.</summary>
+        public int TestFileCount { get; internal set; }
+
+        /// <summary>Frames in all test files.</summary>
+        public int TestFrames { get; internal set; }
+
+        /// <summary>Bytes in all test files.</summary>
+        public long TestBytes { get; internal set; }
+
+        /// <summary>Training files the statistics were computed from; 0 when they were loaded.</summary>
+        public int TrainingFileCount { get; internal set; }
+
+        /// <summary>Seconds spent reading the test files.</summary>
+        public double ReadSeconds { get; internal set; }
+
+        /// <summary>Seconds spent reading the training files and computing statistics; 0 when they were loaded.</summary>
+        public double StatisticsSeconds { get; internal set; }
+
+        /// <summary>Seconds spent evaluating the windows.</summary>
+        public double EvaluationSeconds { get; internal set; }
+
+        /// <summary>
+        /// Refuses statistics that are not finite before they are saved (a file that would poison every later
+        /// run that loads it).
+        /// </summary>
+        /// <exception cref="DataFormatException">A mean, deviation or offset is not a finite number.</exception>
+        public void RequireFiniteStatistics()
+        {
+            foreach (double[] values in new[] { Statistics.Mean, Statistics.StandardDeviation, Statistics.Offsets })
+            {
+                foreach (double v in values)
+                {
+                    if (!double.IsFinite(v))
+                    {
+                        throw new DataFormatException(Folder.Path, $"the statistics computed from the training files hold {v.ToString(CultureInfo.InvariantCulture)}", "expected finite motion values in the training files");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,102 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using DeltaInterpolator.Core;
+using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Preview
+{
+    /// <summary>
+    /// A <see cref="PreviewScene"/> from named BVH files of one skeleton: each file read and refused when it
+    /// has no frames, motion too large to draw, another skeleton or another frame rate than the first; an
+    /// optional frame range cut from every file; key frames checked against the frames shown.
+    /// </summary>
+    public static class BvhPreview
+    {
+        /// <summary>Reads the files and builds the scene.</summary>
+        /// <param name="tracks">Track names and BVH files, in the order shown.</param>
+        /// <param name="range">Frames START..END (inclusive, frame indices of the files) to show, or null for all.</param>
+        /// <param name="keys">Key frame indices of the files, increasing.</param>
+        /// <param name="firstIsTruth">True when the first track is the ground truth the others are measured against.</param>
+        /// <exception cref="DataFormatException">A file cannot be shown with the others, or a key lies outside the frames shown.</exception>
+        public static PreviewScene Build(IReadOnlyList<(string Name, string Path)> tracks, (int Start, int End)? range, IReadOnlyList<int> keys, bool firstIsTruth)
+        {
+            var clips = new List<(string Name, MotionClip Clip)>();
+            BvhAnimation? first = null;
+            foreach ((string name, string path) in tracks)
+            {
+                BvhAnimation animation = BvhReader.Read(path);
+                if (animation.Motion.FrameCount == 0) throw new DataFormatException(path, "has no frames (Frames: 0)", "expected at least one frame to show");
+                FinitePositions.Require(animation.Motion, path, "the motion");
+                if (first == null)
+                {
+                    first = animation;
+                }
+                else
+                {
+                    RequireSameKind(first, animation, path);
+                }
+
+                clips.Add((name, Slice(animation.Motion, range, path)));
+            }
+
+            int frames = 0;
+            foreach ((string _, MotionClip clip) in clips) frames = Math.Max(frames, clip.FrameCount);
+            int offset = range?.Start ?? 0;
+            var sceneKeys = new int[keys.Count];
+            for (int i = 0; i < keys.Count; i++)
+            {
+                int key = keys[i];
+                if (key - offset < 0 || key - offset >= frames)
+                {
+                    string where = range == null ? $"frames 0..{frames - 1} of the files" : $"the shown frames {offset}..{offset + frames - 1} (--frames)";
+                    throw new DataFormatException("--keys", $"key frame {key} is outside {where}", "expected key frames inside them");
+                }
+
+                sceneKeys[i] = key - offset;
+            }
+
+            string title = Path.GetFileName(tracks[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
+            return PreviewScene.FromClips(title, clips, sceneKeys, firstIsTruth ? 0 : -1);
+        }
+
+        /// <summary>Refuses a file that cannot play beside the first: another skeleton or another frame rate.</summary>
+        private static void RequireSameKind(BvhAnimation first, BvhAnimation animation, string path)
+        {
+            string? difference = PreviewScene.SkeletonDifference(first.Skeleton, animation.Skeleton);
+            if (difference != null)
+            {
+                throw new DataFormatException(path, $"{difference} ({first.SourceName})", "expected the same skeleton in every file (retarget first)");
+            }
+
+            double a = first.Motion.FrameTime, b = animation.Motion.FrameTime;
+            if (Math.Abs(a - b) > 1e-6 * a)
+            {
+                throw new DataFormatException(path, string.Format(CultureInfo.InvariantCulture, "{0:0.###} fps where {1} has {2:0.###} fps", 1 / b, first.SourceName, 1 / a), "expected one frame rate in every file");
+            }
+        }
+
+        /// <summary>Frames START..END of a clip (END clipped to its last frame).</summary>
+        private static MotionClip Slice(MotionClip clip, (int Start, int End)? range, string path)
+        {
+            if (range == null) return clip;
+            (int start, int end) = range.Value;
+            if (start >= clip.FrameCount)
+            {
+                throw new DataFormatException(path, $"--frames starts at {start} but the file has {clip.FrameCount} frames", $"expected a start below {clip.FrameCount}");
+            }
+
+            int last = Math.Min(end, clip.FrameCount - 1);
+            int count = last - start + 1;
+            int j = clip.Skeleton.JointCount;
+            var positions = new double[count * j * 3];
+            var rotations = new double[count * j * 4];
+            Array.Copy(clip.LocalPositions, start * j * 3, positions, 0, positions.Length);
+            Array.Copy(clip.LocalRotations, start * j * 4, rotations, 0, rotations.Length);
+            return new MotionClip(clip.Skeleton, count, clip.FrameTime, positions, rotations);
+        }
+    }
+}
