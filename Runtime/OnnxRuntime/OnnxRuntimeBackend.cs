@@ -112,13 +112,13 @@ namespace DeltaInterpolator.OnnxRuntime
             {
                 foreach (InferenceTensor t in inputs)
                 {
-                    Check(t, Description.FindInput(t.Name), "input");
+                    Description.RequireInput(t);
                     binding.Io.BindInput(t.Name, binding.Wrap(t));
                 }
 
                 foreach (InferenceTensor t in outputs)
                 {
-                    Check(t, Description.FindOutput(t.Name), "output");
+                    Description.RequireOutput(t);
                     binding.Io.BindOutput(t.Name, binding.Wrap(t));
                 }
             }
@@ -140,19 +140,6 @@ namespace DeltaInterpolator.OnnxRuntime
             foreach (Binding b in _bindings.ToArray()) b.Dispose();
             _runOptions.Dispose();
             _session.Dispose();
-        }
-
-        private void Check(InferenceTensor t, TensorDescription? d, string what)
-        {
-            if (d == null)
-            {
-                throw new ModelContractException(Description.Source, $"the graph has no {what} '{t.Name}'", "expected the tensor names of Documentation~/model-contract.md");
-            }
-
-            if (d.Kind != t.Kind)
-            {
-                throw new ModelContractException(Description.Source, $"{what} '{t.Name}' is {d.Kind}", $"expected {t.Kind}");
-            }
         }
 
         private static ModelDescription Describe(string path, InferenceSession session, IReadOnlyDictionary<string, string> metadata)

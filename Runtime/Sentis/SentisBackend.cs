@@ -89,13 +89,13 @@ namespace DeltaInterpolator.Sentis
             {
                 foreach (InferenceTensor t in inputs)
                 {
-                    Check(t, Description.FindInput(t.Name), "input");
+                    Description.RequireInput(t);
                     binding.AddInput(t);
                 }
 
                 foreach (InferenceTensor t in outputs)
                 {
-                    Check(t, Description.FindOutput(t.Name), "output");
+                    Description.RequireOutput(t);
                     binding.AddOutput(t);
                 }
             }
@@ -116,19 +116,6 @@ namespace DeltaInterpolator.Sentis
             _disposed = true;
             foreach (Binding b in _bindings.ToArray()) b.Dispose();
             _worker.Dispose();
-        }
-
-        private void Check(InferenceTensor t, TensorDescription? d, string what)
-        {
-            if (d == null)
-            {
-                throw new ModelContractException(Description.Source, $"the graph has no {what} '{t.Name}'", "expected the tensor names of Documentation~/model-contract.md");
-            }
-
-            if (d.Kind != t.Kind)
-            {
-                throw new ModelContractException(Description.Source, $"{what} '{t.Name}' is {d.Kind}", $"expected {t.Kind}");
-            }
         }
 
         private static ModelDescription Describe(string source, Model model, IReadOnlyDictionary<string, string> metadata)

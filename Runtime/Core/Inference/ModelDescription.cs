@@ -79,6 +79,27 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>The output called <paramref name="name"/>, or null.</summary>
         public TensorDescription? FindOutput(string name) => Find(Outputs, name);
 
+        /// <summary>Checks that the graph has an input of <paramref name="tensor"/>'s name and element type (what every backend checks when binding).</summary>
+        /// <exception cref="ModelContractException">It has none, or one of another type.</exception>
+        public void RequireInput(InferenceTensor tensor) => Require(tensor, FindInput(tensor.Name), "input");
+
+        /// <summary>Checks that the graph has an output of <paramref name="tensor"/>'s name and element type.</summary>
+        /// <exception cref="ModelContractException">It has none, or one of another type.</exception>
+        public void RequireOutput(InferenceTensor tensor) => Require(tensor, FindOutput(tensor.Name), "output");
+
+        private void Require(InferenceTensor t, TensorDescription? d, string what)
+        {
+            if (d == null)
+            {
+                throw new ModelContractException(Source, $"the graph has no {what} '{t.Name}'", "expected the tensor names of Documentation~/model-contract.md");
+            }
+
+            if (d.Kind != t.Kind)
+            {
+                throw new ModelContractException(Source, $"{what} '{t.Name}' is {d.Kind}", $"expected {t.Kind}");
+            }
+        }
+
         private static TensorDescription? Find(IReadOnlyList<TensorDescription> list, string name)
         {
             for (int i = 0; i < list.Count; i++)

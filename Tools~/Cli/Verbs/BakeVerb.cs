@@ -56,6 +56,7 @@ namespace DeltaInterpolator.Cli.Verbs
             var read = Stopwatch.StartNew();
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(r.Input), r.InputFps);
             MotionChecks.RequireFinitePositions(animation.Motion, r.Input, "the input");
+            MotionChecks.RequireFrame(animation.Motion, r.ReferenceFrame, "--reference-frame", r.Input);
             double readSeconds = read.Elapsed.TotalSeconds;
 
             var load = Stopwatch.StartNew();

@@ -155,6 +155,8 @@ namespace DeltaInterpolator.Cli.Verbs
             OutputFile.Check(output, parse.GetValue(_output.Force), input, toModel ? null : to, mapPath, modelPath);
 
             BvhAnimation source = BvhReader.Read(input);
+            MotionChecks.RequireFrame(source.Motion, parse.GetValue(_referenceFrame), "--reference-frame", input);
+            MotionChecks.RequireFrame(source.Motion, fromFrame, "--from-frame", input, spare: 1);
             ModelContract contract;
             using (Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(modelPath), LazyGraphs.None)) contract = model.Contract;
             JointMap? userMap = mapPath == null ? null : JointMap.Load(mapPath, JointMap.Detect(source.Skeleton, contract.Skeleton));
@@ -174,6 +176,7 @@ namespace DeltaInterpolator.Cli.Verbs
             else
             {
                 BvhAnimation other = BvhReader.Read(to);
+                MotionChecks.RequireFrame(other.Motion, request.TargetReferenceFrame, "--target-reference-frame", to);
                 retargeted = MotionRetargeting.ToRig(source.Motion, input, other.Motion, to, contract, request);
                 result = new BvhAnimation(retargeted.Motion, other.JointChannels, other.EndSites, output);
             }
