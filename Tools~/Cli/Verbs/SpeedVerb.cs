@@ -86,9 +86,12 @@ namespace DeltaInterpolator.Cli.Verbs
             int repeats = parse.GetValue(_repeats);
             string jsonPath = parse.GetValue(_json)!;
             if (repeats < 10) throw new CliErrors.UsageException($"inbetween speed: --repeats {repeats}; expected at least 10");
+            // Checked before the minutes of measuring, as every other value.
+            int characters = parse.GetValue(_characters);
+            if (characters < 0 || characters > CrowdBenchmark.MaxCharacters) throw new CliErrors.UsageException($"inbetween speed: --characters {characters}; expected 0 (skip) to {CrowdBenchmark.MaxCharacters}");
             string? root = RepositoryCheckout.Find();
             string? given = parse.GetValue(_model.Model);
-            string modelPath = given ?? (root == null ? ShippedModels.Find(ShippedModels.Default) : Path.Combine(root, ShippedModels.Default));
+            string modelPath = given ?? ShippedModels.Find(ShippedModels.Default);
             if (given == null && !File.Exists(modelPath))
             {
                 throw new CliErrors.UsageException($"{modelPath}: the shipped model is not there; expected it after export (python3 -m deltainterp export), or pass --model FILE.onnx");
@@ -108,8 +111,6 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             JsonObject? pytorch = parse.GetValue(_pytorch) ? PyTorchSpeed.Run(root, contract, threads, repeats) : null;
-            int characters = parse.GetValue(_characters);
-            if (characters < 0 || characters > CrowdBenchmark.MaxCharacters) throw new CliErrors.UsageException($"inbetween speed: --characters {characters}; expected 0 (skip) to {CrowdBenchmark.MaxCharacters}");
             JsonObject? crowd = null;
             if (characters > 0 && model.SupportsLazyDecoding)
             {
