@@ -31,6 +31,13 @@ namespace DeltaInterpolator.Core.Playback
     /// </remarks>
     public sealed class RootMotion
     {
+        /// <summary>
+        /// Seconds over which the character catches up with where the transition wants it after the
+        /// blend-in (time constant of the pull); short enough to stand under the hips long before the
+        /// target, long enough that the speed changes by a few percent per frame.
+        /// </summary>
+        public const double CatchUpSeconds = 0.25;
+
         private RootFrame _anchorToWorld;      // motion space (raw-bone coordinates of the anchored character) → world
         private RootFrame _toWorld;            // this frame's stream space → world (character frame · armature)
         private RootFrame _character;
@@ -133,7 +140,7 @@ namespace DeltaInterpolator.Core.Playback
 
             Vector3D root = Vector3D.Read(player.PoseRoot, 0);
             Vector3D velocity = Vector3D.Zero;
-            Vector3D step = Vector3D.Zero;      // the character's displacement this frame (world)
+            Vector3D shift = Vector3D.Zero;     // the character's displacement this frame (world)
             if (player.IsPlaying && deltaTime > 0)
             {
                 bool reached = player.HasReachedTarget;
@@ -153,10 +160,13 @@ namespace DeltaInterpolator.Core.Playback
                         moved = moved + _carry;
                     }
 
-                    _desired = _desired + _anchorToWorld.VectorToParent(moved);
-                    // Toward where the transition wants the character: exact once the weight is 1, and
-                    // catching up smoothly what the controller's share moved it during the blend-in.
-                    velocity = (1.0 / deltaTime) * (_desired - Horizontal(_character.Position));
+                    Vector3D behind = _desired - Horizontal(_character.Position);
+                    Vector3D step = _anchorToWorld.VectorToParent(moved);
+                    _desired = _desired + step;
+                    // The transition root's velocity, plus a gentle pull toward where the transition wants
+                    // the character: during the blend-in the controller's share of the velocity moved it
+                    // elsewhere, and catching that up in one frame would jolt it.
+                    velocity = (1.0 / deltaTime) * step + (1.0 / CatchUpSeconds) * behind;
                 }
                 else
                 {
@@ -166,15 +176,15 @@ namespace DeltaInterpolator.Core.Playback
 
                 if (Enabled)
                 {
-                    step = deltaTime * BlendVelocity(player.Weight, velocity, controllerVelocity);
+                    shift = deltaTime * BlendVelocity(player.Weight, velocity, controllerVelocity);
                     // Past the target the pose rides along with the character, keeping its place in it.
-                    if (ridingAlong) _carry = _carry + _anchorToWorld.VectorFromParent(step);
+                    if (ridingAlong) _carry = _carry + _anchorToWorld.VectorFromParent(shift);
                 }
             }
 
             _lastTime = time;
             TransitionVelocity = Enabled ? velocity : Vector3D.Zero;
-            RootFrame shownAt = Enabled ? new RootFrame(_character.Position + step, _character.Rotation, _character.Scale).Then(Armature) : Armature;
+            RootFrame shownAt = Enabled ? new RootFrame(_character.Position + shift, _character.Rotation, _character.Scale).Then(Armature) : Armature;
             root = root + _carry;
             shownAt.PointFromParent(_anchorToWorld.PointToParent(root)).Write(poseRoot, 0);
             shownAt.RotationFromParent(_anchorToWorld.RotationToParent(QuaternionD.Read(player.PoseRotations, 0))).Write(poseRootRotation, 0);
