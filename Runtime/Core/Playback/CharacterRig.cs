@@ -140,6 +140,33 @@ namespace DeltaInterpolator.Core.Playback
             return new SkeletonJointMap(map, Armature);
         }
 
+        /// <summary>
+        /// The same rig with the model's T-pose by axes as its reference (<see cref="ReferencePose.ModelTPose"/>):
+        /// for a character whose bones follow the model's local axes and names (a LaFAN1 rig), whose bind pose
+        /// is no T-pose (at zero rotations LaFAN1's bones all point along +X) but whose axes say where a T-pose
+        /// puts each bone.
+        /// </summary>
+        public CharacterRig WithModelTPoseByAxes()
+        {
+            ReferencePose tpose = ReferencePose.ModelTPose(Skeleton);
+            var rotations = new double[_rotations.Length];
+            for (int b = 0; b < _names.Length; b++)
+            {
+                QuaternionD q = Handedness.RotationToUnity(QuaternionD.Read(ToArray(tpose.LocalRotations), 4 * b));
+                if (b == 0) q = Armature.RotationFromParent(q);
+                q.Write(rotations, 4 * b);
+            }
+
+            return new CharacterRig(Name, _names, _parents, _positions, rotations, Armature);
+        }
+
+        private static double[] ToArray(IReadOnlyList<double> values)
+        {
+            var a = new double[values.Count];
+            for (int i = 0; i < a.Length; i++) a[i] = values[i];
+            return a;
+        }
+
         private double[] CharacterOffsets()
         {
             var offsets = new double[_positions.Length];
