@@ -131,6 +131,36 @@ namespace DeltaInterpolator.Tests.Playback
         }
 
         [Test]
+        public void ALafan1RigWithModelAxesMapsAsTheModelsOwnSkeletonDoes()
+        {
+            // The component's default (Generic, LaFAN1 names, reference from the model's axes) must convert
+            // exactly as the name-for-name map of a character built from the model's skeleton did: only
+            // handedness and units change.
+            Skeleton model = RetargetFixtures.Lafan1();
+            int n = model.JointCount;
+            var positions = new double[3 * n];
+            var bind = new double[4 * n];
+            var random = new TestRandom(5);
+            for (int j = 0; j < n; j++)
+            {
+                Handedness.PositionToUnity(0.01 * Vector3D.Read(model.OffsetSpan, 3 * j)).Write(positions, 3 * j);
+                random.Rotation().Write(bind, 4 * j);   // a bind pose that is no T-pose at all
+            }
+
+            var rig = new CharacterRig("lafan1 rig", model.Names, model.Parents, positions, bind, RootFrame.Identity);
+            SkeletonJointMap map = rig.WithModelTPoseByAxes().CreateJointMap(model, JointMap.Lafan1);
+            var byName = new NameJointMap(model, 0.01, model.Names);
+            var root = new[] { 0.2, 0.95, -0.4 };
+            var rotations = new double[4 * n];
+            for (int j = 0; j < n; j++) random.Rotation().Write(rotations, 4 * j);
+            double[] a = new double[4 * n], b = new double[4 * n], ra = new double[3], rb = new double[3];
+            map.ToModel(root, rotations, ra, a);
+            byName.ToModel(root, rotations, rb, b);
+            Assert.That(ra, Is.EqualTo(rb).Within(1e-9));
+            for (int j = 0; j < n; j++) Assert.That(RetargetFixtures.Angle(QuaternionD.Read(a, 4 * j), QuaternionD.Read(b, 4 * j)), Is.LessThan(1e-9), model.Names[j]);
+        }
+
+        [Test]
         public void ARigWithoutAModelJointIsRefusedNamingIt()
         {
             Skeleton model = RetargetFixtures.Lafan1();
