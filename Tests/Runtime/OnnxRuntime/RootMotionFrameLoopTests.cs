@@ -101,6 +101,21 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(Horizontal(loop.HipsWorld - target).Length, Is.LessThan(1e-6 + 2.1 * (loop.Time - loop.Player.TargetTime)));
         }
 
+        [Test]
+        public void EachFrameOfATransitionWithRootMotionAllocatesNothing()
+        {
+            using var loop = new Loop(true, 1.5, 1.0, 60.0, 0.0, slerpOnly: true);
+            loop.PlayUntil(1.2);
+            loop.RequestAhead(Distance, Duration);
+            loop.Step();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            // Through the transition, the target frame and the blend-out.
+            for (int i = 0; i < 90; i++) loop.Step();
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(loop.Completions.Count, Is.EqualTo(1), "the loop crossed the target frame");
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by 90 frames (RootMotion, TransitionPlayer, PoseBlend, SkeletonJointMap)");
+        }
+
         private static Vector3D Horizontal(Vector3D v) => new Vector3D(v.X, 0, v.Z);
 
         /// <summary>The game loop: controller, component (Update + animation job), Animator root motion.</summary>
@@ -152,7 +167,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             public TransitionPlayer Player { get; }
 
-            public List<TransitionCompletion> Completions { get; } = new List<TransitionCompletion>();
+            public List<TransitionCompletion> Completions { get; } = new List<TransitionCompletion>(16);
 
             public double Time { get; private set; }
 
