@@ -3,8 +3,8 @@ using UnityEngine;
 namespace DeltaInterpolator.Unity
 {
     /// <summary>
-    /// How a <see cref="MotionInbetweener"/> runs: which model on which inference engine, how its bones
-    /// map to the model's joints, and how transitions blend with the character's own animation. One asset
+    /// How a <see cref="MotionInbetweener"/> runs: which model on which inference engine, which rig its
+    /// bones form and how they map to the model's joints, and how transitions blend with the character's own animation. One asset
     /// can be shared by many characters (they then share one loaded model).
     /// </summary>
     [CreateAssetMenu(fileName = "InbetweenerSettings", menuName = "Δ-Interpolator/In-betweener Settings", order = 411)]
@@ -19,8 +19,32 @@ namespace DeltaInterpolator.Unity
         private string backend = "Sentis";
 
         [SerializeField]
-        [Tooltip("Bones whose names differ from the model's joints. Joints not listed are found by their own name under the Animator.")]
+        [Tooltip("Humanoid: bones and T-pose from the Animator's humanoid avatar. Generic: bones found by the joint map's names under the Animator.")]
+        private CharacterRigKind rig = CharacterRigKind.Generic;
+
+        [SerializeField]
+        [Tooltip("Generic rigs: the bone-naming convention (LaFAN1, CMU, Mixamo, Poser).")]
+        private BuiltInJointMap jointMap = BuiltInJointMap.Lafan1;
+
+        [SerializeField]
+        [Tooltip("Generic rigs: a JSON joint map, {\"Hips\": \"pelvis\", \"LeftToe\": null, ...}; model joints it does not name take the convention's names.")]
+        private TextAsset? jointMapJson = null;
+
+        [SerializeField]
+        [Tooltip("Generic rigs: bones whose names differ from the joint map's (model joint → bone name).")]
         private JointBinding[] joints = new JointBinding[0];
+
+        [SerializeField]
+        [Tooltip("Generic rigs: the reference pose compared with the model's T-pose (each mapped bone within 25°).")]
+        private ReferencePoseSource referencePose = ReferencePoseSource.ModelAxes;
+
+        [SerializeField]
+        [Tooltip("Reference pose 'Clip Frame': the clip that shows a T-pose.")]
+        private AnimationClip? referenceClip = null;
+
+        [SerializeField]
+        [Tooltip("Reference pose 'Clip Frame': the time (seconds) at which the clip shows it.")]
+        private float referenceClipTime = 0f;
 
         [SerializeField]
         [Tooltip("Seconds a transition takes when a request gives no length.")]
@@ -44,8 +68,26 @@ namespace DeltaInterpolator.Unity
         /// <summary>The inference engine's name (<see cref="InferenceBackends"/>).</summary>
         public string Backend => backend;
 
-        /// <summary>Bones whose names differ from the model's joints.</summary>
+        /// <summary>How the character's bones and reference pose are found.</summary>
+        public CharacterRigKind Rig => rig;
+
+        /// <summary>Generic rigs: the bone-naming convention.</summary>
+        public BuiltInJointMap JointMap => jointMap;
+
+        /// <summary>Generic rigs: a JSON joint map, or null.</summary>
+        public TextAsset? JointMapJson => jointMapJson;
+
+        /// <summary>Generic rigs: bones whose names differ from the joint map's.</summary>
         public JointBinding[] Joints => joints;
+
+        /// <summary>Generic rigs: where the reference pose comes from.</summary>
+        public ReferencePoseSource ReferencePose => referencePose;
+
+        /// <summary>Reference pose <see cref="ReferencePoseSource.ClipFrame"/>: the clip.</summary>
+        public AnimationClip? ReferenceClip => referenceClip;
+
+        /// <summary>Reference pose <see cref="ReferencePoseSource.ClipFrame"/>: the time in the clip (seconds).</summary>
+        public float ReferenceClipTime => referenceClipTime;
 
         /// <summary>Seconds a transition takes when a request gives no length.</summary>
         public float DefaultTransitionSeconds => defaultTransitionSeconds;

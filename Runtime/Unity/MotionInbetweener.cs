@@ -4,6 +4,8 @@ using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Inference;
 using Unity.Profiling;
 using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Core.Rotations;
 using Unity.Collections;
 using UnityEngine;
 using UnityEngine.Animations;
@@ -23,9 +25,13 @@ namespace DeltaInterpolator.Unity
     /// Thin glue over Core's <see cref="TransitionPlayer"/>: each frame <c>Update</c> records the pose shown
     /// last frame and computes this frame's transition pose; the job blends it over the controller's output.
     /// The network runs on a worker thread when the engine allows it, otherwise lazily on the main thread.
-    /// Bones are found by the model's joint names under the Animator (<see cref="InbetweenerSettings.Joints"/>
-    /// renames them); the character must share the model's skeleton and rest pose. The root joint's
-    /// position is its local position under its parent, so transitions happen in the character's space.
+    /// The settings choose the rig (<see cref="InbetweenerSettings.Rig"/>): a humanoid avatar's bones and
+    /// T-pose, or a generic rig's bones by a joint map and a reference pose; Core's <see cref="CharacterRig"/>
+    /// maps them onto the model's skeleton (handedness, units, bone axes, joints the rig lacks) and refuses,
+    /// at start, bones it cannot map or a reference pose that is not a T-pose. Bones the model does not know
+    /// (fingers, twist bones) keep the character's own animation. With <c>Animator.applyRootMotion</c> on, a
+    /// transition moves the character through the root motion (the stream's velocity) along the model's
+    /// root trajectory (Core's <see cref="RootMotion"/>); off, it moves the root bone inside the character.
     /// </remarks>
     [RequireComponent(typeof(Animator))]
     [DisallowMultipleComponent]
@@ -48,6 +54,11 @@ namespace DeltaInterpolator.Unity
         private double[] _targetRoot = new double[3];
         private double[] _targetRotations = new double[0];
         private Quaternion[] _savedRotations = new Quaternion[0];
+        private RootMotion? _rootMotion;
+        // [0..2] the transition's root velocity (main thread → job), [3..5] the controller's (job → main thread), [6] 1 with root motion on.
+        private NativeArray<double> _rootVelocity;
+        private double[] _recordRoot = new double[3];
+        private double[] _recordRotations = new double[0];
         private double _shownTime;
         private bool _shownPending;
 
@@ -64,7 +75,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>True while a transition plays or blends out.</summary>
         public bool IsPlaying => _player != null && _player.IsPlaying;
 
-        /// <summary>The bones driven, in the model's joint order (the order of pose arrays).</summary>
+        /// <summary>The bones driven, the root bone (hips) first, parents before children (the order of pose arrays).</summary>
         public IReadOnlyList<Transform> Bones => _bones;
 
         /// <summary>The model's frame rate; a request in model frames lasts frames / this seconds.</summary>
@@ -100,7 +111,9 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// Transition to a pose: the root bone's local position and every bone's local rotation, in the order
-        /// of <see cref="Bones"/>, arriving in <paramref name="seconds"/> (≤ 0: the settings' default).
+        /// of <see cref="Bones"/>, arriving in <paramref name="seconds"/> (≤ 0: the settings' default). The root
+        /// bone's position is relative to where the character stands now (with root motion on, a position
+        /// 2 m ahead sends the character 2 m ahead).
         /// </summary>
         /// <exception cref="ArgumentException"><paramref name="localRotations"/> does not hold one rotation per bone.</exception>
         public int RequestTransition(Vector3 rootPosition, Quaternion[] localRotations, float seconds = 0)
@@ -125,7 +138,7 @@ namespace DeltaInterpolator.Unity
             {
                 Build();
             }
-            catch (Exception e) when (e is DataFormatException || e is ArgumentException || e is InvalidOperationException)
+            catch (Exception e) when (e is DataFormatException || e is ArgumentException || e is InvalidOperationException || e is JointMapException)
             {
                 Debug.LogError($"{name}: Motion Inbetweener disabled: {e.Message}", this);
                 TearDown();
@@ -145,12 +158,22 @@ namespace DeltaInterpolator.Unity
 
         private void Update()
         {
-            if (_player == null) return;
+            if (_player == null || _rootMotion == null) return;
+            // Where the character stands now is where the last frame was shown (the Animator applied its root motion since).
+            BeginRootMotionFrame();
             using (s_RecordHistory.Auto()) FlushShownPose();
-            using (s_Advance.Auto()) _player.BeginFrame(Time.timeAsDouble);
+            double time = Time.timeAsDouble;
+            using (s_Advance.Auto()) _player.BeginFrame(time);
             Span<double> pose = _pose.AsSpan();
             _player.PoseRoot.CopyTo(pose.Slice(0, 3));
             _player.PoseRotations.CopyTo(pose.Slice(3));
+            var controller = new Vector3D(_rootVelocity[3], _rootVelocity[4], _rootVelocity[5]);
+            _rootMotion.Plan(_player, time, Time.deltaTime, controller, pose.Slice(0, 3), pose.Slice(3, 4));
+            Vector3D velocity = _rootMotion.TransitionVelocity;
+            _rootVelocity[0] = velocity.X;
+            _rootVelocity[1] = velocity.Y;
+            _rootVelocity[2] = velocity.Z;
+            _rootVelocity[6] = _rootMotion.Enabled ? 1 : 0;
             _weight[0] = _player.Weight;
             _shownTime = Time.timeAsDouble;
             _shownPending = true;
@@ -165,27 +188,30 @@ namespace DeltaInterpolator.Unity
             _animator = GetComponent<Animator>();
             _decoder = SharedDecoders.Acquire(model, factory);
             ModelContract contract = _decoder.Contract;
-            _bones = FindBones(contract, s.Joints);
-            var map = new NameJointMap(contract.Skeleton, contract.UnitScale, contract.Skeleton.Names);
-            RootBone = map.RootBone;
+            CharacterRig rig = RigCollector.Collect(_animator, s, contract.Skeleton, out Core.Retargeting.JointMap jointMap, out _bones);
+            SkeletonJointMap map = rig.CreateJointMap(contract.Skeleton, jointMap);
+            RootBone = 0;
+            _rootMotion = new RootMotion(rig.Armature) { Enabled = _animator.applyRootMotion };
             var playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames };
             _player = new TransitionPlayer(map, _decoder, playback);
             _player.TransitionCompleted += OnCompleted;
             int n = _bones.Length;
             _targetRotations = new double[4 * n];
+            _recordRotations = new double[4 * n];
             _savedRotations = new Quaternion[n];
             _handles = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
             for (int b = 0; b < n; b++) _handles[b] = _animator.BindStreamTransform(_bones[b]);
             _pose = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
             _shown = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
             _weight = new NativeArray<double>(1, Allocator.Persistent);
+            _rootVelocity = new NativeArray<double>(7, Allocator.Persistent);
             // Until the job has run once (it does not while the Animator is culled), the pose shown is the
             // bones' current one, never zeros.
             ReadBones(_targetRoot, _targetRotations);
             Span<double> shown = _shown.AsSpan();
             new ReadOnlySpan<double>(_targetRoot).CopyTo(shown.Slice(0, 3));
             new ReadOnlySpan<double>(_targetRotations).CopyTo(shown.Slice(3));
-            var job = new TransitionLayerJob { Bones = _handles, Pose = _pose, Shown = _shown, Weight = _weight, RootBone = RootBone };
+            var job = new TransitionLayerJob { Bones = _handles, Pose = _pose, Shown = _shown, Weight = _weight, RootVelocity = _rootVelocity, RootBone = RootBone };
             _graph = PlayableGraph.Create(name + " (Δ-Interpolator)");
             _graph.SetTimeUpdateMode(DirectorUpdateMode.GameTime);
             AnimationPlayableOutput output = AnimationPlayableOutput.Create(_graph, "Δ-Interpolator", _animator);
@@ -204,58 +230,23 @@ namespace DeltaInterpolator.Unity
             if (_pose.IsCreated) _pose.Dispose();
             if (_shown.IsCreated) _shown.Dispose();
             if (_weight.IsCreated) _weight.Dispose();
+            if (_rootVelocity.IsCreated) _rootVelocity.Dispose();
+            _rootMotion = null;
             if (_player != null) _player.TransitionCompleted -= OnCompleted;
             _player = null;
             if (_decoder != null) SharedDecoders.Release(_decoder);
             _decoder = null;
         }
 
-        private Transform[] FindBones(ModelContract contract, JointBinding[] renames)
-        {
-            var boneOf = new Dictionary<string, string>(StringComparer.Ordinal);
-            foreach (JointBinding r in renames)
-            {
-                if (!string.IsNullOrEmpty(r.joint) && !string.IsNullOrEmpty(r.bone)) boneOf[r.joint] = r.bone;
-            }
-
-            IReadOnlyList<string> joints = contract.Skeleton.Names;
-            var bones = new Transform[joints.Count];
-            var missing = new List<string>();
-            for (int j = 0; j < joints.Count; j++)
-            {
-                string bone = boneOf.TryGetValue(joints[j], out string? renamed) ? renamed : joints[j];
-                Transform? found = FindDescendant(transform, bone);
-                if (found == null) missing.Add(bone);
-                else bones[j] = found;
-            }
-
-            if (missing.Count > 0)
-            {
-                throw new InvalidOperationException($"no bone called {string.Join(", ", missing)} under {name}; add joint bindings for them in the settings (model joint → bone name)");
-            }
-
-            return bones;
-        }
-
-        private static Transform? FindDescendant(Transform parent, string boneName)
-        {
-            for (int c = 0; c < parent.childCount; c++)
-            {
-                Transform child = parent.GetChild(c);
-                if (child.name == boneName) return child;
-                Transform? below = FindDescendant(child, boneName);
-                if (below != null) return below;
-            }
-
-            return null;
-        }
-
         private int Request(TransitionPlayer player, float seconds)
         {
             using (s_Request.Auto())
             {
-                // The pose shown last frame must be in the history before the request reads it.
+                // The pose shown last frame must be in the history before the request reads it, and the target
+                // goes into the same root-motion space, from where the character stands now.
+                BeginRootMotionFrame();
                 FlushShownPose();
+                _rootMotion!.TargetToMotionSpace(_targetRoot, new Span<double>(_targetRotations, 0, 4));
                 float length = seconds > 0 ? seconds : settings!.DefaultTransitionSeconds;
                 WarnOutsideTrainedRange(player, length);
                 return player.RequestTransition(_targetRoot, _targetRotations, length);
@@ -280,10 +271,19 @@ namespace DeltaInterpolator.Unity
 
         private void FlushShownPose()
         {
-            if (!_shownPending || _player == null) return;
+            if (!_shownPending || _player == null || _rootMotion == null) return;
             _shownPending = false;
             ReadOnlySpan<double> shown = _shown.AsReadOnlySpan();
-            _player.Record(_shownTime, shown.Slice(0, 3), shown.Slice(3));
+            shown.Slice(0, 3).CopyTo(_recordRoot);
+            shown.Slice(3).CopyTo(_recordRotations);
+            _rootMotion.ShownToMotionSpace(_recordRoot, new Span<double>(_recordRotations, 0, 4));
+            _player.Record(_shownTime, _recordRoot, _recordRotations);
+        }
+
+        private void BeginRootMotionFrame()
+        {
+            _rootMotion!.Enabled = _animator!.applyRootMotion;
+            _rootMotion.BeginFrame(RigCollector.WorldFrame(transform));
         }
 
         private TransitionPlayer Running()

@@ -1,14 +1,18 @@
 using System;
 using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Rotations;
 using Unity.Collections;
+using UnityEngine;
 using UnityEngine.Animations;
 
 namespace DeltaInterpolator.Unity
 {
     /// <summary>
     /// The animation job layered after the user's Animator Controller: it blends the transition's pose
-    /// (computed on the main thread by Core's <see cref="TransitionPlayer.BeginFrame"/>) over the
-    /// controller's output with <see cref="PoseBlend.Apply"/>, and keeps the pose shown for the history.
+    /// (computed on the main thread by Core's <see cref="TransitionPlayer.BeginFrame"/> and
+    /// <see cref="RootMotion.Plan"/>) over the controller's output with <see cref="PoseBlend.Apply"/>, keeps
+    /// the pose shown for the history, and blends the transition's root velocity over the controller's
+    /// root motion (<see cref="RootMotion.BlendVelocity"/>).
     /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
     internal struct TransitionLayerJob : IAnimationJob
@@ -17,10 +21,29 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> Pose;
         public NativeArray<double> Shown;
         public NativeArray<double> Weight;
+
+        /// <summary>[0..2] the transition's root velocity (world, per second; in), [3..5] the controller's (out), [6] 1 with root motion on.</summary>
+        public NativeArray<double> RootVelocity;
+
         public int RootBone;
 
         public void ProcessRootMotion(AnimationStream stream)
         {
+            // The stream's velocity is the root motion the Animator applies after this job (world space, as
+            // Animator.velocity reports it). The controller's is kept for the main thread's next plan.
+            Vector3 controller = stream.velocity;
+            RootVelocity[3] = controller.x;
+            RootVelocity[4] = controller.y;
+            RootVelocity[5] = controller.z;
+            double weight = Weight[0];
+            if (weight <= 0 || RootVelocity[6] == 0) return;
+            Vector3D blended = RootMotion.BlendVelocity(weight, new Vector3D(RootVelocity[0], RootVelocity[1], RootVelocity[2]), new Vector3D(controller.x, controller.y, controller.z));
+            stream.velocity = new Vector3((float)blended.X, (float)blended.Y, (float)blended.Z);
+            // The transition's pose carries its own facing (the root bone's rotation): the character turns only
+            // by what the controller still shows.
+            Vector3 turn = stream.angularVelocity;
+            float keep = (float)(1.0 - Math.Min(1.0, weight));
+            stream.angularVelocity = new Vector3(turn.x * keep, turn.y * keep, turn.z * keep);
         }
 
         public void ProcessAnimation(AnimationStream stream)

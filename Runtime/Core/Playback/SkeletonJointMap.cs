@@ -16,8 +16,10 @@ namespace DeltaInterpolator.Core.Playback
     /// </summary>
     /// <remarks>
     /// Bones no model joint maps to keep, on the way back, the rotation they had in the last pose given to
-    /// <see cref="ToModel"/> (the character's own animation). Allocation-free after construction; one
-    /// thread at a time.
+    /// <see cref="ToModel"/> (the character's own animation). A character pose is what the animation stream
+    /// holds: the root bone's position and rotation are local to its parent (<see cref="Armature"/>, e.g. an
+    /// FBX armature turned and scaled), the other bones' rotations local to theirs. Allocation-free after
+    /// construction; one thread at a time.
     /// </remarks>
     public sealed class SkeletonJointMap : IJointMap
     {
@@ -28,8 +30,18 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>Wraps <paramref name="map"/>, whose source is the character (model handedness) and target the model.</summary>
         public SkeletonJointMap(SkeletonMap map)
+            : this(map, RootFrame.Identity)
+        {
+        }
+
+        /// <summary>
+        /// Wraps <paramref name="map"/>, whose source is the character in its own space (model handedness), with
+        /// the root bone's parent placed in the character's space (Unity's) by <paramref name="armature"/>.
+        /// </summary>
+        public SkeletonJointMap(SkeletonMap map, RootFrame armature)
         {
             Map = map ?? throw new ArgumentNullException(nameof(map));
+            Armature = armature;
             int n = map.Source.JointCount;
             _positions = new double[3 * n];
             for (int i = 0; i < _positions.Length; i++) _positions[i] = map.Source.Offsets[i];
@@ -42,6 +54,9 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>The retargeting map (source: the character, target: the model).</summary>
         public SkeletonMap Map { get; }
+
+        /// <summary>The root bone's parent in the character's space (Unity's); identity when the root bone sits directly under the character.</summary>
+        public RootFrame Armature { get; }
 
         /// <inheritdoc />
         public int BoneCount => Map.Source.JointCount;
@@ -89,8 +104,9 @@ namespace DeltaInterpolator.Core.Playback
         /// <inheritdoc />
         public void ToModel(ReadOnlySpan<double> boneRoot, ReadOnlySpan<double> boneRotations, Span<double> jointRoot, Span<double> jointRotations)
         {
-            Handedness.PositionFromUnity(Vector3D.Read(boneRoot, 0)).Write(_positions, 0);
-            for (int b = 0; b < BoneCount; b++)
+            Handedness.PositionFromUnity(Armature.PointToParent(Vector3D.Read(boneRoot, 0))).Write(_positions, 0);
+            Handedness.RotationFromUnity(Armature.RotationToParent(QuaternionD.Read(boneRotations, 0))).Write(_readRotations, 0);
+            for (int b = 1; b < BoneCount; b++)
             {
                 Handedness.RotationFromUnity(QuaternionD.Read(boneRotations, 4 * b)).Write(_readRotations, 4 * b);
             }
@@ -104,8 +120,9 @@ namespace DeltaInterpolator.Core.Playback
             _positions.AsSpan().CopyTo(_backPositions);
             _readRotations.AsSpan().CopyTo(_backRotations);
             Map.ToSourceFrame(Vector3D.Read(jointRoot, 0), jointRotations, _backPositions, _backRotations);
-            Handedness.PositionToUnity(Vector3D.Read(_backPositions, 0)).Write(boneRoot, 0);
-            for (int b = 0; b < BoneCount; b++)
+            Armature.PointFromParent(Handedness.PositionToUnity(Vector3D.Read(_backPositions, 0))).Write(boneRoot, 0);
+            Armature.RotationFromParent(Handedness.RotationToUnity(QuaternionD.Read(_backRotations, 0))).Write(boneRotations, 0);
+            for (int b = 1; b < BoneCount; b++)
             {
                 Handedness.RotationToUnity(QuaternionD.Read(_backRotations, 4 * b)).Write(boneRotations, 4 * b);
             }

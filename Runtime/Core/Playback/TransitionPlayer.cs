@@ -122,6 +122,9 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>The frame time at which the current request shows its target (t0 + duration).</summary>
         public double TargetTime => _start + _duration;
 
+        /// <summary>True from the frame that showed the current request's target until its blend-out ends.</summary>
+        public bool HasReachedTarget => _playing && _reached;
+
         /// <summary>Model frames between the last past key and the target of the current request (G = n + 1).</summary>
         public int GapFrames => _gap;
 

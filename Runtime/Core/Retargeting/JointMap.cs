@@ -255,6 +255,31 @@ namespace DeltaInterpolator.Core.Retargeting
             return unknown;
         }
 
+        /// <summary>
+        /// This map with some target joints played by other bones (one bone each), e.g. a character whose
+        /// thigh is called <c>thigh_l</c> in an otherwise Mixamo-named rig. Joints not listed keep their chains.
+        /// </summary>
+        /// <param name="bones">Target joint name → the bone that plays it; blank entries are skipped.</param>
+        public JointMap WithBones(IEnumerable<KeyValuePair<string, string>> bones)
+        {
+            if (bones == null) throw new ArgumentNullException(nameof(bones));
+            var renamed = new Dictionary<string, string>(StringComparer.Ordinal);
+            foreach (KeyValuePair<string, string> kv in bones)
+            {
+                if (!string.IsNullOrWhiteSpace(kv.Key) && !string.IsNullOrWhiteSpace(kv.Value)) renamed[kv.Key] = kv.Value;
+            }
+
+            if (renamed.Count == 0) return this;
+            var chains = new List<KeyValuePair<string, string[]?>>();
+            foreach (string t in _targets) chains.Add(new KeyValuePair<string, string[]?>(t, renamed.TryGetValue(t, out string? bone) ? new[] { bone } : _chains[t]));
+            foreach (KeyValuePair<string, string> kv in renamed)
+            {
+                if (!_chains.ContainsKey(kv.Key)) chains.Add(new KeyValuePair<string, string[]?>(kv.Key, new[] { kv.Value }));
+            }
+
+            return new JointMap(Name, chains, _mayLack);
+        }
+
         /// <summary>The largest map file read (a map of a few hundred joints is a few kilobytes).</summary>
         public const long MaxFileBytes = 1 << 20;
 

@@ -4,5 +4,7 @@ namespace UnityEngine
     public partial class Time
     {
         public static double timeAsDouble => throw null!;
+
+        public static float deltaTime => throw null!;
     }
 }

@@ -18,6 +18,11 @@ namespace UnityEngine.Animations
     // source: unity:Modules/Animation/ScriptBindings/AnimationStream.bindings.cs
     public partial struct AnimationStream
     {
+        public float deltaTime => throw null!;
+
+        public Vector3 velocity { get => throw null!; set => throw null!; }
+
+        public Vector3 angularVelocity { get => throw null!; set => throw null!; }
     }
 
     // source: unity:Modules/Animation/ScriptBindings/AnimationStreamHandles.bindings.cs

@@ -1,0 +1,18 @@
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>How a <see cref="MotionInbetweener"/> finds the character's bones and its reference pose.</summary>
+    public enum CharacterRigKind
+    {
+        /// <summary>
+        /// The bones and names a joint map gives (<see cref="InbetweenerSettings.JointMap"/>, or a JSON map),
+        /// found by name under the Animator; the reference pose is <see cref="InbetweenerSettings.ReferencePose"/>.
+        /// </summary>
+        Generic = 0,
+
+        /// <summary>
+        /// The Animator's humanoid avatar: bones from <c>Animator.GetBoneTransform(HumanBodyBones)</c>, the
+        /// reference pose the avatar's own T-pose (<c>avatar.humanDescription.skeleton</c>).
+        /// </summary>
+        Humanoid = 1,
+    }
+}

@@ -1,0 +1,264 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.OnnxRuntime;
+using DeltaInterpolator.Tests.Playback;
+using NUnit.Framework;
+
+namespace DeltaInterpolator.Tests.OnnxRuntime
+{
+    /// <summary>
+    /// A humanoid character (not the model's rig: HumanBodyBones names, other bone axes, a turned and
+    /// scaled armature, left-handed) walks in a simulated game loop and is sent to a pose 2 m ahead, with
+    /// root motion on (the controller moves the character by a velocity, the root bone stays in place)
+    /// and off (the controller moves the root bone inside a character that stays put). The loop does what
+    /// the Unity component and its animation job do each frame, with <see cref="RootMotion"/> between the
+    /// stream and <see cref="TransitionPlayer"/>, and what the Animator does after the job (apply the
+    /// velocity). The transition plays the network's SLERP/LERP baseline (<see cref="PlaybackSettings.SlerpOnly"/>),
+    /// so the root trajectory it follows is known; a last case runs the tiny network and checks arrival.
+    /// </summary>
+    [TestFixture]
+    public sealed class RootMotionFrameLoopTests
+    {
+        private const double Distance = 2.0;       // metres, in the world
+        private const double Duration = 1.0;       // seconds
+
+        [TestCase(true, 2.0, 1.0, 60.0, 0.0)]
+        [TestCase(true, 1.5, 1.0, 60.0, 0.0)]
+        [TestCase(true, 2.0, 1.7, 144.0, 0.25)]
+        [TestCase(true, 1.5, 0.6, 144.0, 0.25)]
+        [TestCase(false, 2.0, 1.0, 60.0, 0.0)]
+        [TestCase(false, 2.0, 1.7, 144.0, 0.25)]
+        public void WalksToATarget2MetresAheadArrivesOnItsFrameNeverBackwardNoJumpAtBlendOut(bool applyRootMotion, double speed, double characterScale, double fps, double jitter)
+        {
+            using var loop = new Loop(applyRootMotion, speed, characterScale, fps, jitter, slerpOnly: true);
+            loop.PlayUntil(1.2);
+            Vector3D start = loop.HipsWorld;
+            Vector3D target = loop.RequestAhead(Distance, Duration);
+            Assert.That(Horizontal(target - start).Length, Is.EqualTo(Distance).Within(0.05), "the target stands 2 m ahead of the hips");
+            double targetTime = loop.Time + Duration;
+
+            double lastForward = loop.Forward(loop.HipsWorld);
+            double lastSpeed = speed;
+            double worstSpeedChange = 0, worstAt = 0;
+            bool arrived = false;
+            double end = targetTime + 0.2 + 0.3;
+            while (loop.Time < end)
+            {
+                Vector3D before = loop.HipsWorld;
+                Vector3D rootBefore = loop.Character.Position;
+                loop.Step();
+                double forward = loop.Forward(loop.HipsWorld);
+                Assert.That(forward, Is.GreaterThanOrEqualTo(lastForward - 1e-9), $"moved backward at t = {loop.Time:F4}");
+                lastForward = forward;
+                if (applyRootMotion) Assert.That(loop.Forward(loop.Character.Position), Is.GreaterThanOrEqualTo(loop.Forward(rootBefore) - 1e-9), $"the character moved backward at t = {loop.Time:F4}");
+
+                // The root's speed: the hips' horizontal speed in the world (the character's, with root motion on).
+                Vector3D moved = applyRootMotion ? loop.Character.Position - rootBefore : Horizontal(loop.HipsWorld - before);
+                double v = moved.Length / loop.LastStep;
+                if (Math.Abs(v - lastSpeed) > worstSpeedChange)
+                {
+                    worstSpeedChange = Math.Abs(v - lastSpeed);
+                    worstAt = loop.Time - (targetTime - Duration);
+                }
+
+                lastSpeed = v;
+
+                if (loop.Completions.Count > 0 && !arrived)
+                {
+                    arrived = true;
+                    Assert.That(loop.Time, Is.GreaterThanOrEqualTo(targetTime - 1e-9), "arrived early");
+                    Assert.That(loop.Time - loop.LastStep, Is.LessThan(targetTime - 1e-9), "the first frame at or after the target time shows it");
+                    Assert.That(loop.Completions[0].ReachedTarget, Is.True);
+                    // On the target: at the target time exactly; a frame that comes later shows it moved on at the arrival speed.
+                    double late = loop.Time - targetTime;
+                    double miss = Horizontal(loop.HipsWorld - target).Length;
+                    TestContext.WriteLine($"arrived at t = {loop.Time:F4} ({late * 1000:F2} ms after the target time), {miss * 1000:F3} mm from the target");
+                    Assert.That(miss, Is.LessThanOrEqualTo(1e-6 + 1.05 * (Distance / Duration) * late));
+                    Assert.That(Math.Abs(loop.HipsWorld.Y - target.Y), Is.LessThan(1e-6), "hips height on the target frame");
+                }
+            }
+
+            Assert.That(arrived, Is.True, "the transition completed");
+            Assert.That(loop.Player.IsPlaying, Is.False, "the blend-out ended");
+            TestContext.WriteLine($"root motion {(applyRootMotion ? "on" : "off")}, controller {speed} m/s, scale {characterScale}: largest change of root speed between frames {worstSpeedChange:F4} m/s ({worstSpeedChange / speed:P1} of the controller's), {worstAt:F3} s after the request");
+            Assert.That(worstSpeedChange, Is.LessThanOrEqualTo(0.2 * speed));
+            // After the blend-out the controller's own motion shows, at its own speed.
+            Assert.That(lastSpeed, Is.EqualTo(speed).Within(1e-6));
+        }
+
+        [TestCase(true)]
+        [TestCase(false)]
+        public void WithTheNetworkTheCharacterStillArrivesOnTheTargetFrame(bool applyRootMotion)
+        {
+            using var loop = new Loop(applyRootMotion, 2.0, 1.3, 60.0, 0.0, slerpOnly: false);
+            loop.PlayUntil(1.2);
+            Vector3D target = loop.RequestAhead(Distance, Duration);
+            Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
+            while (loop.Completions.Count == 0) loop.Step();
+            Assert.That(Horizontal(loop.HipsWorld - target).Length, Is.LessThan(1e-6 + 2.1 * (loop.Time - loop.Player.TargetTime)));
+        }
+
+        [Test]
+        public void EachFrameOfATransitionWithRootMotionAllocatesNothing()
+        {
+            using var loop = new Loop(true, 1.5, 1.0, 60.0, 0.0, slerpOnly: true);
+            loop.PlayUntil(1.2);
+            loop.RequestAhead(Distance, Duration);
+            loop.Step();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            // Through the transition, the target frame and the blend-out.
+            for (int i = 0; i < 90; i++) loop.Step();
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(loop.Completions.Count, Is.EqualTo(1), "the loop crossed the target frame");
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by 90 frames (RootMotion, TransitionPlayer, PoseBlend, SkeletonJointMap)");
+        }
+
+        private static Vector3D Horizontal(Vector3D v) => new Vector3D(v.X, 0, v.Z);
+
+        /// <summary>The game loop: controller, component (Update + animation job), Animator root motion.</summary>
+        private sealed class Loop : IDisposable
+        {
+            private readonly bool _rootMotionOn;
+            private readonly double _speed;
+            private readonly double _fps;
+            private readonly double _jitter;
+            private readonly TestRandom _random;
+            private readonly UnityHumanoid _humanoid;
+            private readonly TransitionDecoder _decoder;
+            private readonly RootMotion _rootMotion;
+            private readonly double[] _poseRoot = new double[3];
+            private readonly double[] _poseRotations;
+            private readonly double[] _shownRoot = new double[3];
+            private readonly double[] _shownRotations;
+            private readonly double[] _recordRoot = new double[3];
+            private readonly double[] _recordRotations;
+            private readonly double _hipsHeight;
+            private ArrayPoseStream _stream;
+            private double _nextStep;
+
+            public Loop(bool applyRootMotion, double speed, double characterScale, double fps, double jitter, bool slerpOnly)
+            {
+                _rootMotionOn = applyRootMotion;
+                _speed = speed;
+                _fps = fps;
+                _jitter = jitter;
+                _random = new TestRandom(17);
+                Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
+                _decoder = new MainThreadDecoder(model);
+                _humanoid = UnityHumanoid.Model(model.Contract.Skeleton, UnityHumanoid.Blender, seed: 21);
+                SkeletonJointMap map = _humanoid.Rig.CreateJointMap(model.Contract.Skeleton);
+                Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = slerpOnly });
+                Player.TransitionCompleted += e => Completions.Add(e);
+                _rootMotion = new RootMotion(map.Armature) { Enabled = applyRootMotion };
+                int n = _humanoid.BoneCount;
+                _poseRotations = new double[4 * n];
+                _shownRotations = new double[4 * n];
+                _recordRotations = new double[4 * n];
+                _stream = new ArrayPoseStream(new double[3], new double[4 * n]);
+                _hipsHeight = _humanoid.Armature.PointToParent(Vector3D.Read(_humanoid.Positions, 0)).Y;
+                // The character stands turned 30° in the world, at its scale.
+                Character = new RootFrame(new Vector3D(3.0, 0.0, -1.0), Quaternions.FromAxisAngle(Vector3D.UnitY, Math.PI / 6), characterScale);
+                _nextStep = Draw();
+                Time = 0;
+            }
+
+            public TransitionPlayer Player { get; }
+
+            public List<TransitionCompletion> Completions { get; } = new List<TransitionCompletion>(16);
+
+            public double Time { get; private set; }
+
+            public double LastStep { get; private set; }
+
+            /// <summary>The Animator's transform in the world.</summary>
+            public RootFrame Character { get; private set; }
+
+            /// <summary>Where the hips were shown last frame, in the world.</summary>
+            public Vector3D HipsWorld => Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(_shownRoot, 0));
+
+            /// <summary>Distance along the direction the character walks (its +Z in the world).</summary>
+            public double Forward(Vector3D world) => Vector3D.Dot(world, Quaternions.Apply(Character.Rotation, Vector3D.UnitZ));
+
+            public void PlayUntil(double time)
+            {
+                while (Time + _nextStep <= time) Step();
+            }
+
+            /// <summary>
+            /// Requests the controller's pose a little later, its hips <paramref name="metres"/> ahead of the
+            /// hips shown (in the world), sampled in the space the controller's root motion uses.
+            /// </summary>
+            public Vector3D RequestAhead(double metres, double seconds)
+            {
+                var root = new double[3];
+                var rotations = new double[4 * _humanoid.BoneCount];
+                Controller(Time + 0.37, root, rotations);
+                Vector3D shownInCharacter = _humanoid.Armature.PointToParent(Vector3D.Read(_shownRoot, 0));
+                Vector3D targetInCharacter = new Vector3D(shownInCharacter.X, _hipsHeight, shownInCharacter.Z + metres / Character.Scale);
+                _humanoid.Armature.PointFromParent(targetInCharacter).Write(root, 0);
+                Vector3D world = Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(root, 0));
+                // As the component does: the target into the root-motion space, where the character stands now.
+                _rootMotion.BeginFrame(Character);
+                _rootMotion.TargetToMotionSpace(root, rotations);
+                Player.RequestTransition(root, rotations, seconds);
+                return world;
+            }
+
+            public void Step()
+            {
+                double dt = _nextStep;
+                Time += dt;
+                LastStep = dt;
+                _nextStep = Draw();
+                Vector3D controllerVelocity = _rootMotionOn ? Quaternions.Apply(Character.Rotation, (_speed) * Vector3D.UnitZ) : Vector3D.Zero;
+
+                // MotionInbetweener.Update: the frame's transition pose, and the root motion plan.
+                _rootMotion.BeginFrame(Character);
+                Player.BeginFrame(Time);
+                Player.PoseRoot.CopyTo(_poseRoot);
+                Player.PoseRotations.CopyTo(_poseRotations);
+                _rootMotion.Plan(Player, Time, dt, controllerVelocity, _poseRoot, _poseRotations.AsSpan(0, 4));
+
+                // The Animator Controller's output, then TransitionLayerJob: root motion, then the pose.
+                Controller(Time, _stream.Root, _stream.Rotations);
+                Vector3D velocity = RootMotion.BlendVelocity(Player.Weight, _rootMotion.TransitionVelocity, controllerVelocity);
+                PoseBlend.Apply(ref _stream, Player.Weight, _poseRoot, _poseRotations, _shownRoot, _shownRotations);
+
+                // The Animator applies root motion after the job (only when applyRootMotion is on).
+                if (_rootMotionOn) Character = new RootFrame(Character.Position + dt * velocity, Character.Rotation, Character.Scale);
+
+                // Next Update: the pose shown is recorded in the root-motion space, where it was shown.
+                _rootMotion.BeginFrame(Character);
+                Array.Copy(_shownRoot, _recordRoot, 3);
+                Array.Copy(_shownRotations, _recordRotations, _shownRotations.Length);
+                _rootMotion.ShownToMotionSpace(_recordRoot, _recordRotations.AsSpan(0, 4));
+                Player.Record(Time, _recordRoot, _recordRotations);
+            }
+
+            public void Dispose() => _decoder.Dispose();
+
+            /// <summary>
+            /// The controller walking at the set speed: with root motion on, in place (the velocity moves the
+            /// character); off, the hips move forward inside the character. Bones sway around the T-pose.
+            /// </summary>
+            private void Controller(double time, double[] root, double[] rotations)
+            {
+                double forward = _rootMotionOn ? 0.0 : _speed * time / Character.Scale;
+                var hips = new Vector3D(0.0, _hipsHeight + 0.01 * Math.Sin(4 * Math.PI * time), forward);
+                _humanoid.Armature.PointFromParent(hips).Write(root, 0);
+                for (int b = 0; b < _humanoid.BoneCount; b++)
+                {
+                    QuaternionD rest = QuaternionD.Read(_humanoid.ReferenceRotations, 4 * b);
+                    var axis = new Vector3D(Math.Sin(b), Math.Cos(b), 0.5);
+                    QuaternionD sway = Quaternions.FromAxisAngle((1.0 / axis.Length) * axis, 0.15 * Math.Sin(2 * Math.PI * 1.3 * time + b));
+                    Quaternions.Normalize(Quaternions.Multiply(rest, sway)).Write(rotations, 4 * b);
+                }
+            }
+
+            private double Draw() => (1.0 / _fps) * (1 + _jitter * _random.Uniform(-1, 1));
+        }
+    }
+}
