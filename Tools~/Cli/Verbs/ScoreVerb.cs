@@ -102,7 +102,13 @@ namespace DeltaInterpolator.Cli.Verbs
             {
                 foreach (string m in models) inbetweeners.Add(InbetweenerLoader.Load(new OnnxModelFiles(m, new OnnxRuntimeOptions { IntraOpThreads = 1 }), LazyGraphs.None));
                 var names = new List<string>();
-                foreach (Inbetweener ib in inbetweeners) names.Add(ib.Contract.Name);
+                for (int i = 0; i < inbetweeners.Count; i++)
+                {
+                    // Two exports of one name (a new model against the shipped one) stay apart in the table and the JSON.
+                    string name = inbetweeners[i].Contract.Name;
+                    bool shared = inbetweeners.FindAll(other => other.Contract.Name == name).Count > 1;
+                    names.Add(shared ? name + " (" + models[i] + ")" : name);
+                }
                 names.Add("SLERP");
                 var sheet = new ScoreSheet(names);
                 AnsiConsole.Progress().AutoClear(true).Start(ctx =>
