@@ -78,8 +78,11 @@ namespace DeltaInterpolator.Unity
         /// <summary>The bones driven, the root bone (hips) first, parents before children (the order of pose arrays).</summary>
         public IReadOnlyList<Transform> Bones => _bones;
 
-        /// <summary>The model's frame rate; a request in model frames lasts frames / this seconds.</summary>
-        public double ModelFrameRate => _player?.FrameRate ?? 30;
+        /// <summary>
+        /// The model's frame rate (its contract owns it); a request in model frames lasts frames / this seconds.
+        /// NaN while no model is loaded: no other value is assumed here.
+        /// </summary>
+        public double ModelFrameRate => _player?.FrameRate ?? double.NaN;
 
         /// <summary>
         /// Transition to the pose <paramref name="clip"/> shows at <paramref name="clipTime"/>, arriving in
@@ -105,9 +108,16 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// <see cref="RequestTransition(AnimationClip, float, float)"/> with the length in model frames
-        /// (the model's rate, <see cref="ModelFrameRate"/>).
+        /// (the model's rate, <see cref="ModelFrameRate"/>). Named apart from it on purpose: as an overload,
+        /// <c>RequestTransition(clip, 0.2f, 1)</c> meant one frame (33 ms), not one second.
         /// </summary>
-        public int RequestTransition(AnimationClip clip, float clipTime, int modelFrames) => RequestTransition(clip, clipTime, (float)(modelFrames / ModelFrameRate));
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="modelFrames"/> below 1.</exception>
+        public int RequestTransitionInFrames(AnimationClip clip, float clipTime, int modelFrames)
+        {
+            if (modelFrames < 1) throw new ArgumentOutOfRangeException(nameof(modelFrames), modelFrames, "expected at least one model frame");
+            TransitionPlayer player = Running();
+            return RequestTransition(clip, clipTime, (float)(modelFrames / player.FrameRate));
+        }
 
         /// <summary>
         /// Transition to a pose: the root bone's local position and every bone's local rotation, in the order
