@@ -227,6 +227,21 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--force", action="store_true", help="replace existing OUT, .keys.onnx and .frame.onnx files")
 
     p = sub.add_parser(
+        "chained", help="validation of chained bakes: the pack's validation tails filled gap after gap",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Bakes the validation tails of a prepared pack (the last 10 %% of every file that is not a "
+                    "time-scaled copy)\nas `inbetween bake` does: keys every K frames, each gap's past frames the "
+                    "previous gap's output,\nand prints the mean joint position error and L2Q over the non-key "
+                    "frames, model and SLERP.\nWhat `train`'s one-gap validation cannot see; choose long-gap "
+                    "models by it, never by held-out subjects.\n"
+                    "Example:\n  PYTHONPATH=Training/Python~ python3 -m deltainterp chained --data "
+                    "Training/.data/cmu-train.npz --checkpoint Training/runs/cmu/checkpoint.pt --every 15 30 60")
+    p.add_argument("--data", required=True, help="the prepared pack (.npz) the model was trained on")
+    p.add_argument("--checkpoint", required=True, action="append",
+                   help="checkpoint.pt or exported .onnx (repeat to compare models side by side)")
+    p.add_argument("--every", type=int, nargs="+", default=[15, 30, 60], help="key spacings in model frames (default 15 30 60)")
+
+    p = sub.add_parser(
         "fixtures", help="write the tiny test model and golden vectors for the C# tests",
         description="Writes tiny-model.pt, tiny-model.onnx (+ .keys.onnx, .frame.onnx) and golden.json "
                     "into --out. Deterministic: the same bytes on every run. Regenerating replaces them by "
@@ -299,6 +314,27 @@ def _run_evaluate_export_fixtures(args) -> int:
               f"(max |diff| {report.max_difference:.2g})")
         for kind, path in report.paths.items():
             print(f"  {kind:<5} {path}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")
+        return 0
+    if args.verb == "chained":
+        from .chained import chained_metrics
+        from .checkpoint import load_checkpoint
+        from .data import load_pack
+        from .warm_start import load_exported_model
+        torch.set_num_threads(1)
+        pack = load_pack(args.data)
+        for path in args.checkpoint:
+            loaded = load_exported_model(path) if path.endswith(".onnx") else load_checkpoint(path)
+            skeleton = loaded.skeleton_tensors(torch.float32)
+            for k in args.every:
+                if k < 2:
+                    raise ValueError(f"--every {k}: expected at least 2 frames between keys")
+                r = chained_metrics(loaded.model, pack, skeleton, k)
+                if r.get("tails", 0) == 0:
+                    print(f"{path}  every {k}: no validation tail of {k + 1} frames or more")
+                    continue
+                print(f"{path}  every {k}: {r['tails']} tails, {r['gaps']} gaps, {r['frames']} frames  "
+                      f"position {r['model_position']:.4f} vs SLERP {r['slerp_position']:.4f} (x{r['position_vs_slerp']:.3f})  "
+                      f"L2Q {r['model_l2q']:.4f} vs {r['slerp_l2q']:.4f} (x{r['l2q_vs_slerp']:.3f})")
         return 0
     if args.verb == "fixtures":
         from .fixtures import write_fixtures
