@@ -155,6 +155,9 @@ def _train(sub) -> None:
     p.add_argument("--max-gap", type=int, default=39,
                    help="longest gap trained on (default 39, the paper); raise it for keys further apart, e.g. "
                         "119 for a key every 4 s at 30 fps (longer layouts come from windows of their own length)")
+    p.add_argument("--chained-share", type=float, default=0.0,
+                   help="share of batches whose past frames are the network's own output for the gap before (as a "
+                        "bake feeds them; default 0)")
     p.add_argument("--init-from", default="",
                    help="start a new run from these weights (an exported .onnx or a checkpoint.pt) instead of random")
     p.add_argument("--threads", type=int, default=1,
@@ -378,7 +381,8 @@ def main(argv: Optional[List[str]] = None) -> int:
                               checkpoint_every=args.checkpoint_every, validate_every=args.validate_every,
                               max_minutes=args.max_minutes, threads=args.threads, min_past=args.min_past,
                               longest_past_share=args.longest_past_share, uniform_past=args.uniform_past,
-                              init_from=args.init_from, min_gap=args.min_gap, max_gap=args.max_gap)
+                              init_from=args.init_from, min_gap=args.min_gap, max_gap=args.max_gap,
+                              chained_share=args.chained_share)
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0

@@ -22,6 +22,7 @@ from .checkpoint import CheckpointError, read_checkpoint, save_checkpoint_file
 from .data import MotionPack, load_pack, split_windows, training_ranges, windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
+from .localize import unlocalize
 from .objective import SkeletonTensors, loss, make_batch, predict
 from .sampler import TransitionSampler
 
@@ -51,6 +52,7 @@ class TrainConfig:
     uniform_past: bool = False  # p(P) uniform on [min_past, 10] instead of weighted to P = 10 and P = 1
     min_gap: int = 5            # missing frames n drawn on [min_gap, max_gap] with p(n) ∝ 1/n (the paper: 5..39)
     max_gap: int = 39           # longer gaps need longer windows: see WindowSource
+    chained_share: float = 0.0  # share of batches whose past frames are the network's own output (draw_chained)
     init_from: str = ""         # start from these weights (an exported .onnx or a checkpoint.pt), not random
 
 
@@ -103,7 +105,36 @@ class WindowSource:
 
     def draw(self, rng: np.random.Generator, batch_size: int):
         layout = self.sampler.sample(rng)
-        length = layout.length
+        roots, quats = self.windows(rng, batch_size, layout.length)
+        return layout, roots, quats
+
+    def draw_chained(self, rng: np.random.Generator, batch_size: int, model, skeleton: SkeletonTensors):
+        """A batch whose past frames are the network's own output, as in a bake: a window holds 10 ground-truth
+        frames, a gap of n, key k0, a gap of n and the target; the network fills the first gap (no gradient),
+        and the trained transition is the second gap with its last P past frames ending at k0 — filled frames
+        and the key, as `inbetween bake` feeds them (keys every n + 1 frames)."""
+        layout = self.sampler.sample(rng)
+        n, p = layout.gap, layout.past
+        first = self.sampler.layout(n, past=10)
+        roots, quats = self.windows(rng, batch_size, first.length + n + 1)
+        cfg = getattr(model, "module", model).config
+        was_training = model.training
+        model.eval()
+        with torch.no_grad():
+            b = make_batch(roots[:, :first.length], quats[:, :first.length], first, skeleton,
+                           cfg.output_delta_mode, cfg.input_delta_mode)
+            fill_root, fill_rot, _, _ = predict(model, b, with_keys=False)
+            fill_root, fill_rot = unlocalize(fill_root, fill_rot, b.localization, skeleton.unit_scale)
+        if was_training:
+            model.train()
+        roots, quats = roots.clone(), quats.clone()
+        roots[:, 10:10 + n] = fill_root.to(roots.dtype)
+        quats[:, 10:10 + n] = fill_rot.to(quats.dtype)
+        start = 10 + n - p + 1
+        return layout, roots[:, start:].contiguous(), quats[:, start:].contiguous()
+
+    def windows(self, rng: np.random.Generator, batch_size: int, length: int):
+        """`batch_size` windows of `length` frames (augmented), float32."""
         starts, window = self.starts_for(length)
         picks = starts[rng.integers(0, len(starts), batch_size)]
         shift = rng.integers(0, window - length + 1, batch_size)
@@ -122,7 +153,7 @@ class WindowSource:
             roots = quaternions.apply(yaw[:, None].expand(-1, length, -1), roots)
             quats = quats.clone()
             quats[:, :, 0] = quaternions.multiply(yaw[:, None].expand(-1, length, -1), quats[:, :, 0])
-        return layout, roots.float(), quats.float()
+        return roots.float(), quats.float()
 
 
 def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: np.ndarray,
@@ -185,7 +216,8 @@ RESUME_SETTINGS = {"batch_size": "--batch-size", "peak_lr": "--lr", "warmup_step
                    "decay_at": "--decay-at", "reconstruction_scale": "--reconstruction-scale", "seed": "--seed",
                    "unit_scale": "unit_scale", "mirror": "--mirror", "random_yaw": "--random-yaw",
                    "min_past": "--min-past", "longest_past_share": "--longest-past-share",
-                   "uniform_past": "--uniform-past", "min_gap": "--min-gap", "max_gap": "--max-gap"}
+                   "uniform_past": "--uniform-past", "min_gap": "--min-gap", "max_gap": "--max-gap",
+                   "chained_share": "--chained-share"}
 
 
 def run_checkpoint(out: Path) -> Optional[Path]:
@@ -347,7 +379,9 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
                                 uniform_past=cfg.uniform_past, min_gap=cfg.min_gap, max_gap=cfg.max_gap)
     source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device,
                           ranges=training_ranges(pack))
-    source.starts_for(10 + cfg.max_gap + 1)  # refuse a --max-gap no file can give before training starts
+    source.starts_for(10 + cfg.max_gap + 1 + (cfg.max_gap + 1 if cfg.chained_share > 0 else 0))  # refuse a --max-gap no file can give before training starts
+    if not 0.0 <= cfg.chained_share <= 1.0:
+        raise ValueError(f"--chained-share {cfg.chained_share}; expected a share from 0 to 1")
     # Long gaps are validated on windows of their own length (fewer files have such tails).
     long_gaps = tuple(n for n in VALIDATION_LONG_GAPS if n <= cfg.max_gap)
     long_val = {n: split_windows(pack, validation_length=10 + n + 1)[1] for n in long_gaps}
@@ -392,7 +426,10 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         lr = learning_rate(cfg, step)
         for g in optimizer.param_groups:
             g["lr"] = lr
-        layout, roots, quats = source.draw(rng, cfg.batch_size)
+        if cfg.chained_share > 0 and rng.random() < cfg.chained_share:
+            layout, roots, quats = source.draw_chained(rng, cfg.batch_size, model, skeleton)
+        else:
+            layout, roots, quats = source.draw(rng, cfg.batch_size)
         batch = make_batch(roots, quats, layout, skeleton, model_cfg.output_delta_mode, model_cfg.input_delta_mode)
         terms = loss(net, batch, skeleton, cfg.reconstruction_scale)
         optimizer.zero_grad(set_to_none=True)

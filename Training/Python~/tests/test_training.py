@@ -151,3 +151,25 @@ def test_max_gap_trains_validates_and_exports_its_range(skeleton, tmp_path):
 def test_max_gap_beyond_the_frame_embedding_is_refused(synthetic_pack_path, tmp_path):
     with pytest.raises(ValueError, match="expected --max-gap ≤ 245"):
         train(config(synthetic_pack_path, tmp_path / "run", steps=1, preset="runtime", max_gap=246), progress=False)
+
+
+def test_chained_batches_take_their_past_frames_from_the_network(synthetic_pack_path, tiny):
+    """--chained-share: the trained transition's past frames before the key are the network's fill of the
+    gap before it; the key and the target stay the ground truth."""
+    from deltainterp.data import training_ranges
+    pack = load_pack(str(synthetic_pack_path))
+    train_starts, _ = split_windows(pack)
+    skel = skeleton_tensors(pack, 0.01, "cpu")
+    sampler = TransitionSampler(min_past=5, past=10, min_gap=8, max_gap=8)
+    chained = WindowSource(pack, train_starts, 50, sampler, False, False, "cpu", ranges=training_ranges(pack))
+    plain = WindowSource(pack, train_starts, 50, sampler, False, False, "cpu", ranges=training_ranges(pack))
+    layout, roots, quats = chained.draw_chained(np.random.default_rng(3), 4, tiny.model, skel)
+    rng = np.random.default_rng(3)
+    sampler.sample(rng)  # the same layout draw, then the same windows, untouched
+    truth_roots, truth_quats = plain.windows(rng, 4, 10 + 8 + 1 + 8 + 1)
+    start = 10 + 8 - layout.past + 1
+    assert roots.shape[1] == layout.length and layout.gap == 8
+    key = layout.past - 1
+    assert torch.equal(roots[:, key], truth_roots[:, start + key]) and torch.equal(quats[:, -1], truth_quats[:, -1])
+    assert not torch.allclose(roots[:, :key], truth_roots[:, start:start + key])  # filled, not the truth
+    assert torch.equal(roots[:, key + 1:], truth_roots[:, start + key + 1:])  # the trained gap and target: truth
