@@ -9,7 +9,16 @@ namespace DeltaInterpolator.Evaluation.Baking
         /// <summary>Creates a row; every value must be finite.</summary>
         /// <exception cref="ArgumentException">A value is not finite, or the methods' counts differ.</exception>
         public ScoreRow(string file, string group, int frames, double legLength, double[] positionPerLeg, double[] l2q)
+            : this(file, group, frames, legLength, positionPerLeg, l2q, new double[l2q.Length], 0, double.NaN)
         {
+        }
+
+        /// <summary>Creates a row with foot skating: per method and the ground truth's, over <paramref name="contactSamples"/> planted (frame, joint) pairs.</summary>
+        /// <exception cref="ArgumentException">A position or L2Q value is not finite, or the methods' counts differ.</exception>
+        public ScoreRow(string file, string group, int frames, double legLength, double[] positionPerLeg, double[] l2q,
+            double[] footSkating, int contactSamples, double truthFootSkating)
+        {
+            if (footSkating.Length != l2q.Length) throw new ArgumentException("one foot-skating value per method", nameof(footSkating));
             if (positionPerLeg.Length != l2q.Length) throw new ArgumentException("one position and one L2Q value per method", nameof(l2q));
             for (int i = 0; i < l2q.Length; i++)
             {
@@ -22,6 +31,9 @@ namespace DeltaInterpolator.Evaluation.Baking
             LegLength = legLength;
             PositionPerLeg = positionPerLeg;
             L2Q = l2q;
+            FootSkating = footSkating;
+            ContactSamples = contactSamples;
+            TruthFootSkating = truthFootSkating;
         }
 
         /// <summary>The file's name (relative to its data folder).</summary>
@@ -41,6 +53,15 @@ namespace DeltaInterpolator.Evaluation.Baking
 
         /// <summary>Per method: L2Q.</summary>
         public IReadOnlyList<double> L2Q { get; }
+
+        /// <summary>Per method: foot skating in leg lengths per second where the truth's feet are planted (0 with no <see cref="ContactSamples"/>).</summary>
+        public IReadOnlyList<double> FootSkating { get; }
+
+        /// <summary>Planted (frame, joint) pairs of the ground truth on the non-key frames: the weight of <see cref="FootSkating"/>.</summary>
+        public int ContactSamples { get; }
+
+        /// <summary>The ground truth's own foot skating (NaN with no contact samples).</summary>
+        public double TruthFootSkating { get; }
 
         private static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
     }

@@ -52,7 +52,9 @@ namespace DeltaInterpolator.Evaluation.Baking
             int methods = Methods.Count;
             var p = new double[methods];
             var q = new double[methods];
-            int frames = 0, files = 0;
+            var skate = new double[methods];
+            double truthSkate = 0;
+            int frames = 0, files = 0, contacts = 0;
             foreach (ScoreRow r in rows)
             {
                 files++;
@@ -61,16 +63,22 @@ namespace DeltaInterpolator.Evaluation.Baking
                 {
                     p[i] += r.PositionPerLeg[i] * r.Frames;
                     q[i] += r.L2Q[i] * r.Frames;
+                    if (r.ContactSamples > 0) skate[i] += r.FootSkating[i] * r.ContactSamples;
                 }
+
+                if (r.ContactSamples > 0) truthSkate += r.TruthFootSkating * r.ContactSamples;
+                contacts += r.ContactSamples;
             }
 
             for (int i = 0; i < methods; i++)
             {
                 p[i] /= Math.Max(1, frames);
                 q[i] /= Math.Max(1, frames);
+                skate[i] = contacts > 0 ? skate[i] / contacts : double.NaN;
             }
 
-            return new ScoreTotal(files, frames, p, q);
+            // Foot skating is a mean over planted (frame, joint) pairs, so it is weighted by them, not by frames.
+            return new ScoreTotal(files, frames, p, q, skate, contacts, contacts > 0 ? truthSkate / contacts : double.NaN);
         }
 
         /// <summary>Every file's total.</summary>

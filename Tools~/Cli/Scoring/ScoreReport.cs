@@ -15,7 +15,7 @@ namespace DeltaInterpolator.Cli.Scoring
             using var buffer = new MemoryStream();
             using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
             {
-                void Methods(string key, IReadOnlyList<double> p, IReadOnlyList<double> q)
+                void Methods(string key, IReadOnlyList<double> p, IReadOnlyList<double> q, IReadOnlyList<double> skate, int contacts)
                 {
                     w.WriteStartObject(key);
                     for (int i = 0; i < methods; i++)
@@ -25,10 +25,18 @@ namespace DeltaInterpolator.Cli.Scoring
                         w.WriteNumber("l2q", q[i]);
                         w.WriteNumber("position_vs_slerp", p[i] / p[methods - 1]);
                         w.WriteNumber("l2q_vs_slerp", q[i] / q[methods - 1]);
+                        if (contacts > 0 && double.IsFinite(skate[i])) w.WriteNumber("foot_skating", skate[i]);
+                        else w.WriteNull("foot_skating");
                         w.WriteEndObject();
                     }
 
                     w.WriteEndObject();
+                }
+
+                void Skating(string key, double value, int contacts)
+                {
+                    if (contacts > 0 && double.IsFinite(value)) w.WriteNumber(key, value);
+                    else w.WriteNull(key);
                 }
 
                 w.WriteStartObject();
@@ -44,7 +52,9 @@ namespace DeltaInterpolator.Cli.Scoring
                     w.WriteString("group", r.Group);
                     w.WriteNumber("non_key_frames", r.Frames);
                     w.WriteNumber("leg_length", r.LegLength);
-                    Methods("methods", r.PositionPerLeg, r.L2Q);
+                    w.WriteNumber("foot_contact_samples", r.ContactSamples);
+                    Skating("ground_truth_foot_skating", r.TruthFootSkating, r.ContactSamples);
+                    Methods("methods", r.PositionPerLeg, r.L2Q, r.FootSkating, r.ContactSamples);
                     w.WriteEndObject();
                 }
 
@@ -55,7 +65,9 @@ namespace DeltaInterpolator.Cli.Scoring
                     ScoreTotal t = sheet.Total(g.Value);
                     w.WriteStartObject(g.Key.Length == 0 ? "-" : g.Key);
                     w.WriteNumber("non_key_frames", t.Frames);
-                    Methods("methods", t.PositionPerLeg, t.L2Q);
+                    w.WriteNumber("foot_contact_samples", t.ContactSamples);
+                    Skating("ground_truth_foot_skating", t.TruthFootSkating, t.ContactSamples);
+                    Methods("methods", t.PositionPerLeg, t.L2Q, t.FootSkating, t.ContactSamples);
                     w.WriteEndObject();
                 }
 
@@ -64,7 +76,9 @@ namespace DeltaInterpolator.Cli.Scoring
                 w.WriteStartObject("total");
                 w.WriteNumber("files", sheet.Rows.Count);
                 w.WriteNumber("non_key_frames", all.Frames);
-                Methods("methods", all.PositionPerLeg, all.L2Q);
+                w.WriteNumber("foot_contact_samples", all.ContactSamples);
+                Skating("ground_truth_foot_skating", all.TruthFootSkating, all.ContactSamples);
+                Methods("methods", all.PositionPerLeg, all.L2Q, all.FootSkating, all.ContactSamples);
                 w.WriteEndObject();
                 w.WriteEndObject();
             }

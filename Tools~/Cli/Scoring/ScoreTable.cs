@@ -44,6 +44,12 @@ namespace DeltaInterpolator.Cli.Scoring
             ScoreTotal all = sheet.Total();
             AddRow($"all {sheet.Rows.Count} files", all.PositionPerLeg, all.L2Q, all.Frames, true);
             AnsiConsole.Write(table);
+            if (all.ContactSamples == 0) return;
+            var parts = new List<string>();
+            for (int i = 0; i < methods; i++) parts.Add(string.Format(CultureInfo.InvariantCulture, "{0} {1:0.000}", sheet.Methods[i], all.FootSkating[i]));
+            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
+                "foot skating over all files (leg lengths per second, on the {0:N0} (frame, joint) pairs where the ground truth's feet are planted): {1}; ground truth {2:0.000}",
+                all.ContactSamples, string.Join(", ", parts), all.TruthFootSkating)));
         }
     }
 }

@@ -146,7 +146,9 @@ namespace DeltaInterpolator.Cli.Verbs
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(e.FilePath), e.Fps);
             var position = new double[models.Count + 1];
             var l2q = new double[models.Count + 1];
-            int frames = 0;
+            var skating = new double[models.Count + 1];
+            int frames = 0, contacts = 0;
+            double truthSkating = double.NaN;
             double leg = 0;
             for (int i = 0; i < models.Count; i++)
             {
@@ -159,19 +161,26 @@ namespace DeltaInterpolator.Cli.Verbs
                 frames = scores["Model"].Accuracy.Frames;
                 position[i] = scores["Model"].Accuracy.MeanPositionError / leg;
                 l2q[i] = scores["Model"].Accuracy.L2Q;
+                skating[i] = Skating(scores["Model"].Skating);
                 if (i > 0) continue;
                 position[models.Count] = scores["SLERP"].Accuracy.MeanPositionError / leg;
                 l2q[models.Count] = scores["SLERP"].Accuracy.L2Q;
+                skating[models.Count] = Skating(scores["SLERP"].Skating);
+                contacts = scores.TruthSkating.ContactSamples;
+                truthSkating = scores.TruthSkating.MeanSpeed;
             }
 
             try
             {
-                return new ScoreRow(e.Name, e.Group, frames, leg, position, l2q);
+                return new ScoreRow(e.Name, e.Group, frames, leg, position, l2q, skating, contacts, truthSkating);
             }
             catch (ArgumentException)
             {
                 throw new CliErrors.UsageException($"{e.FilePath}: non-finite errors; expected finite motion values");
             }
         }
+
+        // No planted truth frame: nothing to weigh (the row's contact count is 0 then).
+        private static double Skating(FootSkating s) => double.IsNaN(s.MeanSpeed) ? 0 : s.MeanSpeed;
     }
 }
