@@ -245,9 +245,20 @@ namespace DeltaInterpolator.Editor.Baking
                     foreach (MethodBake result in run.Methods)
                     {
                         progress.Show($"Writing the {result.Method.Name} clip…", 0.95f);
-                        IReadOnlyList<ClipCurve> curves = humanoid
-                            ? ClipSampler.HumanoidClipCurves(animator, rig, bones, result.OnRig)
-                            : CurveBuilder.BuildCharacter(rig, result.OnRig, ClipSampler.Paths(character.transform, bones));
+                        IReadOnlyList<ClipCurve> curves;
+                        if (humanoid)
+                        {
+                            // The poses go onto the bones to be read as human poses: in animation mode, and put back.
+                            using (new AnimationModeScope())
+                            {
+                                curves = ClipSampler.HumanoidClipCurves(animator, rig, bones, result.OnRig);
+                            }
+                        }
+                        else
+                        {
+                            curves = CurveBuilder.BuildCharacter(rig, result.OnRig, ClipSampler.Paths(character.transform, bones));
+                        }
+
                         EditorUtility.ClearProgressBar();
                         string clipName = result.Method.Name == "Model" ? name : $"{name} ({result.Method.Name})";
                         ClipWriter.Save(curves, rate, clipName, humanoid ? typeof(Animator) : typeof(Transform));
