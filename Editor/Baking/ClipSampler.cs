@@ -1,25 +1,45 @@
 #nullable enable
+using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Clips;
+using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Skeletons;
 using UnityEditor;
 using UnityEngine;
 
 namespace DeltaInterpolator.Editor.Baking
 {
     /// <summary>
-    /// The Unity side of reading keys: a clip's pose-curve key times (for <see cref="ClipKeyReader"/>) and
-    /// the character's pose sampled at given times (into a <see cref="KeyPoseTrack"/>). Sampling moves the
-    /// character's bones; <see cref="SampleInto"/> puts them back before returning.
+    /// The Unity side of a bake's input and output: a clip's pose-curve key times (transform curves or a humanoid
+    /// clip's body and muscle curves, for <see cref="ClipKeyReader"/>), the character's rig bones sampled through
+    /// <see cref="AnimationMode"/> into a <see cref="CharacterPoseTrack"/>, and baked motion turned into a humanoid
+    /// clip's curves through <see cref="HumanPoseHandler"/>. Every conversion is Core's.
     /// </summary>
     internal static class ClipSampler
     {
-        /// <summary>The key times of every rotation and position curve of <paramref name="clip"/>.</summary>
+        private static HashSet<string>? s_muscleProperties;
+
+        /// <summary>Every muscle's curve property as humanoid clips name them.</summary>
+        public static HashSet<string> MuscleProperties()
+        {
+            if (s_muscleProperties == null)
+            {
+                var set = new HashSet<string>(StringComparer.Ordinal);
+                foreach (string muscle in HumanTrait.MuscleName) set.Add(HumanoidCurves.MuscleProperty(muscle));
+                s_muscleProperties = set;
+            }
+
+            return s_muscleProperties;
+        }
+
+        /// <summary>The key times of every pose curve of <paramref name="clip"/>: transform rotations and positions, or a humanoid clip's body and muscles.</summary>
         public static List<IReadOnlyList<float>> PoseKeyTimes(AnimationClip clip)
         {
+            HashSet<string> muscles = MuscleProperties();
             var result = new List<IReadOnlyList<float>>();
             foreach (EditorCurveBinding binding in AnimationUtility.GetCurveBindings(clip))
             {
-                if (!ClipKeyReader.IsPoseProperty(binding.propertyName)) continue;
+                if (!ClipKeyReader.IsPoseProperty(binding.propertyName) && !HumanoidCurves.IsPoseProperty(binding.propertyName, muscles)) continue;
                 AnimationCurve curve = AnimationUtility.GetEditorCurve(clip, binding);
                 if (curve == null) continue;
                 Keyframe[] keys = curve.keys;
@@ -31,67 +51,137 @@ namespace DeltaInterpolator.Editor.Baking
             return result;
         }
 
-        /// <summary>Every transform's path under <paramref name="root"/> ("" for the root), as curve bindings write them.</summary>
-        public static List<string> TransformPaths(Transform root)
+        /// <summary>Each bone's path under <paramref name="root"/>, as curve bindings write them.</summary>
+        public static string[] Paths(Transform root, Transform[] bones)
         {
-            var paths = new List<string>();
-            foreach (Transform t in root.GetComponentsInChildren<Transform>(true))
-            {
-                paths.Add(AnimationUtility.CalculateTransformPath(t, root));
-            }
-
+            var paths = new string[bones.Length];
+            for (int b = 0; b < bones.Length; b++) paths[b] = AnimationUtility.CalculateTransformPath(bones[b], root);
             return paths;
         }
 
         /// <summary>
-        /// Samples <paramref name="clip"/> on <paramref name="character"/> at each time and writes the
-        /// bones' local rotations and the root bone's local position into frame <c>frames[i]</c> of
-        /// <paramref name="track"/>.
+        /// Samples <paramref name="clip"/> on <paramref name="character"/> at each time (through the Animator's avatar
+        /// for a humanoid clip) and writes the rig bones' transforms into frame <c>frames[i]</c> of <paramref name="track"/>.
+        /// Call inside an <see cref="AnimationModeScope"/>: the scene is restored when it ends.
         /// </summary>
-        /// <param name="track">The model-space track to fill.</param>
-        /// <param name="character">The GameObject the clip animates (its curve paths start here).</param>
-        /// <param name="bones">The model's joints' transforms, in joint order (joint 0 is the root bone).</param>
-        /// <param name="clip">The clip to sample (a generic clip; humanoid clips need an Animator and are not supported here).</param>
+        /// <param name="track">The character's track.</param>
+        /// <param name="character">The Animator's GameObject (its curve paths start here).</param>
+        /// <param name="bones">The rig's bones, in <see cref="CharacterRig.BoneNames"/> order.</param>
+        /// <param name="clip">The clip to sample.</param>
         /// <param name="frames">Frame index in the track of each sample.</param>
         /// <param name="times">Clip time (seconds) of each sample.</param>
-        public static void SampleInto(KeyPoseTrack track, GameObject character, Transform[] bones, AnimationClip clip, IReadOnlyList<int> frames, IReadOnlyList<double> times)
+        public static void SampleInto(CharacterPoseTrack track, GameObject character, Transform[] bones, AnimationClip clip, IReadOnlyList<int> frames, IReadOnlyList<double> times)
         {
-            var savedRotations = new Quaternion[bones.Length];
-            var savedPositions = new Vector3[bones.Length];
-            for (int j = 0; j < bones.Length; j++)
+            var root = new double[3];
+            var rotations = new double[4 * bones.Length];
+            for (int i = 0; i < frames.Count; i++)
             {
-                savedRotations[j] = bones[j].localRotation;
-                savedPositions[j] = bones[j].localPosition;
+                AnimationMode.BeginSampling();
+                AnimationMode.SampleAnimationClip(character, clip, (float)times[i]);
+                AnimationMode.EndSampling();
+                Read(bones, root, rotations);
+                track.SetUnityPose(frames[i], root, rotations);
+            }
+        }
+
+        /// <summary>
+        /// The curves of a humanoid clip (body and muscles, on the Animator) that play <paramref name="motion"/>: each
+        /// frame is put on the bones and read back as a human pose. The bones are put back before returning.
+        /// </summary>
+        /// <param name="animator">The character's humanoid Animator.</param>
+        /// <param name="rig">The character's rig.</param>
+        /// <param name="bones">The rig's bones, in <see cref="CharacterRig.BoneNames"/> order.</param>
+        /// <param name="motion">Motion on <see cref="CharacterRig.Skeleton"/> (a bake's <c>OnRig</c>).</param>
+        public static IReadOnlyList<ClipCurve> HumanoidClipCurves(Animator animator, CharacterRig rig, Transform[] bones, MotionClip motion)
+        {
+            int frames = motion.FrameCount;
+            string[] muscleNames = HumanTrait.MuscleName;
+            var bodyPositions = new float[3 * frames];
+            var bodyRotations = new float[4 * frames];
+            var muscles = new float[muscleNames.Length * frames];
+            var savedPositions = new Vector3[bones.Length];
+            var savedRotations = new Quaternion[bones.Length];
+            for (int b = 0; b < bones.Length; b++)
+            {
+                savedPositions[b] = bones[b].localPosition;
+                savedRotations[b] = bones[b].localRotation;
             }
 
-            var pose = new float[bones.Length * 4];
+            var root = new double[3];
+            var rotations = new double[4 * bones.Length];
+            var pose = new HumanPose();
+            var handler = new HumanPoseHandler(animator.avatar, animator.transform);
             try
             {
-                for (int i = 0; i < frames.Count; i++)
+                for (int f = 0; f < frames; f++)
                 {
-                    clip.SampleAnimation(character, (float)times[i]);
-                    for (int j = 0; j < bones.Length; j++)
+                    CharacterPoseTrack.ReadUnityPose(rig, motion, f, root, rotations);
+                    for (int b = 0; b < bones.Length; b++)
                     {
-                        Quaternion q = bones[j].localRotation;
-                        pose[4 * j] = q.x;
-                        pose[4 * j + 1] = q.y;
-                        pose[4 * j + 2] = q.z;
-                        pose[4 * j + 3] = q.w;
+                        bones[b].localRotation = new Quaternion((float)rotations[4 * b + 1], (float)rotations[4 * b + 2], (float)rotations[4 * b + 3], (float)rotations[4 * b]);
                     }
 
-                    Vector3 root = bones[0].localPosition;
-                    track.SetUnityPose(frames[i], pose, root.x, root.y, root.z);
+                    bones[0].localPosition = new Vector3((float)root[0], (float)root[1], (float)root[2]);
+                    handler.GetHumanPose(ref pose);
+                    bodyPositions[3 * f] = pose.bodyPosition.x;
+                    bodyPositions[3 * f + 1] = pose.bodyPosition.y;
+                    bodyPositions[3 * f + 2] = pose.bodyPosition.z;
+                    bodyRotations[4 * f] = pose.bodyRotation.x;
+                    bodyRotations[4 * f + 1] = pose.bodyRotation.y;
+                    bodyRotations[4 * f + 2] = pose.bodyRotation.z;
+                    bodyRotations[4 * f + 3] = pose.bodyRotation.w;
+                    Array.Copy(pose.muscles, 0, muscles, f * muscleNames.Length, muscleNames.Length);
                 }
             }
             finally
             {
-                // Sampling is a read: leave the scene as it was.
-                for (int j = 0; j < bones.Length; j++)
+                handler.Dispose();
+                for (int b = 0; b < bones.Length; b++)
                 {
-                    bones[j].localRotation = savedRotations[j];
-                    bones[j].localPosition = savedPositions[j];
+                    bones[b].localPosition = savedPositions[b];
+                    bones[b].localRotation = savedRotations[b];
                 }
             }
+
+            return HumanoidCurves.Build(muscleNames, motion.FrameTime, bodyPositions, bodyRotations, muscles);
         }
+
+        private static void Read(Transform[] bones, double[] root, double[] rotations)
+        {
+            for (int b = 0; b < bones.Length; b++)
+            {
+                Quaternion q = bones[b].localRotation;
+                rotations[4 * b] = q.w;
+                rotations[4 * b + 1] = q.x;
+                rotations[4 * b + 2] = q.y;
+                rotations[4 * b + 3] = q.z;
+            }
+
+            Vector3 p = bones[0].localPosition;
+            root[0] = p.x;
+            root[1] = p.y;
+            root[2] = p.z;
+        }
+    }
+
+    /// <summary>
+    /// Editor animation mode for the length of a bake: what sampling writes onto the scene is previewed, never
+    /// saved, and goes back when the scope ends. Refuses to start inside another animation mode (the Animation
+    /// window's preview or record), whose changes ending it would throw away.
+    /// </summary>
+    internal sealed class AnimationModeScope : IDisposable
+    {
+        /// <exception cref="InvalidOperationException">The editor is already in animation mode.</exception>
+        public AnimationModeScope()
+        {
+            if (AnimationMode.InAnimationMode())
+            {
+                throw new InvalidOperationException("the editor is in animation mode (the Animation window previews or records); leave preview and record mode, then bake");
+            }
+
+            AnimationMode.StartAnimationMode();
+        }
+
+        public void Dispose() => AnimationMode.StopAnimationMode();
     }
 }

@@ -19,7 +19,8 @@ namespace DeltaInterpolator.Editor.Baking
         /// <param name="curves">The curves to write (paths relative to the animated GameObject).</param>
         /// <param name="frameRate">The clip's sample rate (the model's rate).</param>
         /// <param name="defaultName">File name offered in the save panel, without extension.</param>
-        public static AnimationClip? Save(IReadOnlyList<ClipCurve> curves, double frameRate, string defaultName)
+        /// <param name="boundTo">The component type the curves animate: <c>Transform</c> for a generic clip, <c>Animator</c> for a humanoid clip's body and muscles.</param>
+        public static AnimationClip? Save(IReadOnlyList<ClipCurve> curves, double frameRate, string defaultName, System.Type boundTo)
         {
             string path = EditorUtility.SaveFilePanelInProject("Save baked clip", defaultName, "anim", "Where to save the clip with the in-betweens");
             if (string.IsNullOrEmpty(path)) return null;
@@ -40,7 +41,7 @@ namespace DeltaInterpolator.Editor.Baking
             {
                 var keys = new Keyframe[c.KeyCount];
                 for (int i = 0; i < keys.Length; i++) keys[i] = new Keyframe(c.Times[i], c.Values[i], c.InTangents[i], c.OutTangents[i]);
-                AnimationUtility.SetEditorCurve(clip, EditorCurveBinding.FloatCurve(c.Path, typeof(Transform), c.Property), new AnimationCurve(keys));
+                AnimationUtility.SetEditorCurve(clip, EditorCurveBinding.FloatCurve(c.Path, boundTo, c.Property), new AnimationCurve(keys));
             }
 
             AssetDatabase.CreateAsset(clip, path);

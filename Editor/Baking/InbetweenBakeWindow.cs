@@ -6,7 +6,10 @@ using System.Linq;
 using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
+using DeltaInterpolator.Core.Workflows;
 using DeltaInterpolator.Unity;
 using UnityEditor;
 using UnityEngine;
@@ -16,9 +19,13 @@ namespace DeltaInterpolator.Editor.Baking
     /// <summary>
     /// Window → Animation → In-between Baker: fills the gaps between key poses with the model and saves
     /// the result as a new clip. The keys come from a clip's own keyframes, or from two clips and a
-    /// transition point. Every decision (which frames are keys, how poses become model space and back,
-    /// which curves a clip gets) is Core code (<see cref="ClipKeyReader"/>, <see cref="TransitionKeyPlan"/>,
-    /// <see cref="KeyPoseTrack"/>, <see cref="CurveBuilder"/>); this window binds the fields to it.
+    /// transition point. The baker takes what the component takes: the character's rig as the settings
+    /// describe it (<see cref="RigCollector"/>: a humanoid avatar, or a generic rig with a joint map and its
+    /// renames), sampled in animation mode (the scene is never written), baked through Core's workflow
+    /// (<see cref="CharacterBake"/> → <see cref="InbetweenBake"/>, the component's map), and saved as
+    /// muscle curves for a humanoid Animator or transform curves for a generic one. Every decision (which
+    /// frames are keys, how poses reach the model and back, which curves a clip gets) is Core code; this
+    /// window binds the fields to it.
     /// </summary>
     internal sealed class InbetweenBakeWindow : EditorWindow
     {
@@ -32,7 +39,9 @@ namespace DeltaInterpolator.Editor.Baking
         }
 
         [SerializeField] private GameObject? _character;
+        [SerializeField] private InbetweenerSettings? _settings;
         [SerializeField] private InbetweeningModel? _model;
+        [SerializeField] private bool _alsoSlerp;
         [SerializeField] private KeySource _source = KeySource.ClipKeyframes;
         [SerializeField] private AnimationClip? _keyClip;
         [SerializeField] private AnimationClip? _fromClip;
@@ -56,7 +65,8 @@ namespace DeltaInterpolator.Editor.Baking
         private void OnGUI()
         {
             _character = (GameObject?)EditorGUILayout.ObjectField("Character", _character, typeof(GameObject), true);
-            _model = (InbetweeningModel?)EditorGUILayout.ObjectField("Model", _model, typeof(InbetweeningModel), false);
+            _settings = (InbetweenerSettings?)EditorGUILayout.ObjectField("Settings", _settings, typeof(InbetweenerSettings), false);
+            _model = (InbetweeningModel?)EditorGUILayout.ObjectField("Model (else the settings')", _model, typeof(InbetweeningModel), false);
             _source = (KeySource)EditorGUILayout.EnumPopup("Keys from", _source);
             if (_source == KeySource.ClipKeyframes)
             {
@@ -64,8 +74,9 @@ namespace DeltaInterpolator.Editor.Baking
                 if (_keyClip != null)
                 {
                     // Reading every curve is slow for big clips: once per clip, not per repaint.
-                    if (_ratedModel != _model) _modelRate = FrameRateOf(_model); // parsed once per model, not per repaint
-                    _ratedModel = _model;
+                    InbetweeningModel? model = ModelAsset();
+                    if (_ratedModel != model) _modelRate = FrameRateOf(model); // parsed once per model, not per repaint
+                    _ratedModel = model;
                     double rate = _modelRate;
                     if (_describedClip != _keyClip || _describedRate != rate) _description = DescribeKeys(_keyClip, rate);
                     _describedClip = _keyClip;
@@ -83,6 +94,7 @@ namespace DeltaInterpolator.Editor.Baking
             }
 
             _pastFrames = EditorGUILayout.IntField("Past keys (frames)", _pastFrames);
+            _alsoSlerp = EditorGUILayout.Toggle("Also bake SLERP", _alsoSlerp);
             string? problem = Problem();
             if (problem != null) EditorGUILayout.HelpBox(problem, MessageType.Warning);
             if (GUILayout.Button("Bake…") && problem == null)
@@ -91,11 +103,11 @@ namespace DeltaInterpolator.Editor.Baking
             }
         }
 
-        // The whole graph only: a bake decodes every gap at once. Sentis on the CPU when installed,
-        // otherwise the first engine registered with InferenceBackends.
-        private static Inbetweener Load(InbetweeningModel model)
+        // The whole graph only: a bake decodes every gap at once. The settings' engine, else Sentis,
+        // else the first engine registered with InferenceBackends.
+        private static Inbetweener Load(InbetweeningModel model, string backend)
         {
-            IInferenceBackendFactory? factory = InferenceBackends.Find("Sentis");
+            IInferenceBackendFactory? factory = InferenceBackends.Find(backend) ?? InferenceBackends.Find("Sentis");
             if (factory == null && InferenceBackends.All.Count > 0) factory = InferenceBackends.All[0];
             if (factory == null)
             {
@@ -107,8 +119,10 @@ namespace DeltaInterpolator.Editor.Baking
 
         private string? Problem()
         {
-            if (_character == null) return "Assign the character (the GameObject the clips animate).";
-            if (_model == null) return "Assign a model asset (Create → Delta Interpolator → Model).";
+            if (_character == null) return "Assign the character (the GameObject with the Animator the clips animate).";
+            if (_character.transform.GetComponent<Animator>() == null) return $"{_character.name} has no Animator; assign the GameObject that holds it.";
+            if (_settings == null) return "Assign the in-betweener settings (the rig, joint map and renames the component uses).";
+            if (ModelAsset() == null) return "Assign a model asset here or in the settings (Create → Delta Interpolator → Model).";
             if (_pastFrames < 1) return "Past keys must be at least 1.";
             if (_source == KeySource.ClipKeyframes) return _keyClip == null ? "Assign the clip whose keyframes are the key poses." : null;
             if (_fromClip == null || _toClip == null) return "Assign both clips.";
@@ -117,6 +131,8 @@ namespace DeltaInterpolator.Editor.Baking
             if (_toTime < 0 || _toTime > _toClip.length) return $"'Arrive at' must lie in the second clip (0 – {_toClip.length:0.###} s).";
             return null;
         }
+
+        private InbetweeningModel? ModelAsset() => _model != null ? _model : _settings != null ? _settings.Model : null;
 
         // Keys are counted at the model's frame rate, which its contract owns (30 when it does not say).
         private static double FrameRateOf(InbetweeningModel? model)
@@ -146,24 +162,20 @@ namespace DeltaInterpolator.Editor.Baking
         private void Bake()
         {
             GameObject character = _character!;
+            InbetweenerSettings settings = _settings!;
+            Animator animator = character.transform.GetComponent<Animator>();
+            var progress = new ProgressBar();
             try
             {
-                using (Inbetweener inbetweener = Load(_model!))
+                using (Inbetweener inbetweener = Load(ModelAsset()!, settings.Backend))
                 {
                     ModelContract contract = inbetweener.Contract;
-                    Skeleton skeleton = contract.Skeleton;
                     double rate = contract.FramesPerSecond;
-                    string?[] paths = BonePaths.Resolve(skeleton.Names, ClipSampler.TransformPaths(character.transform), out List<string> missing);
-                    if (missing.Count > 0)
-                    {
-                        EditorUtility.DisplayDialog("Bones missing", $"{character.name} has no bone named {string.Join(", ", missing)}. The model needs every joint of its skeleton ({contract.Source}); use a character with the model's skeleton.", "OK");
-                        return;
-                    }
+                    // The character as the component sees it: the same bones, joint map and renames.
+                    CharacterRig rig = RigCollector.Collect(animator, settings, contract.Skeleton, out JointMap jointMap, out Transform[] bones);
+                    bool humanoid = settings.Rig == CharacterRigKind.Humanoid;
 
-                    var bones = new Transform[paths.Length];
-                    for (int j = 0; j < bones.Length; j++) bones[j] = paths[j]!.Length == 0 ? character.transform : character.transform.Find(paths[j]!);
-
-                    KeyPoseTrack track;
+                    CharacterPoseTrack track;
                     string name;
                     if (_source == KeySource.ClipKeyframes)
                     {
@@ -186,8 +198,13 @@ namespace DeltaInterpolator.Editor.Baking
                             return;
                         }
 
-                        track = new KeyPoseTrack(skeleton, keys.FrameCount, rate, contract.UnitScale);
-                        ClipSampler.SampleInto(track, character, bones, clip, keys.Frames, keys.Frames.Select(f => f / rate).ToList());
+                        track = new CharacterPoseTrack(rig, keys.FrameCount, 1.0 / rate);
+                        progress.Show("Sampling the key poses…", 0f);
+                        using (new AnimationModeScope())
+                        {
+                            ClipSampler.SampleInto(track, character, bones, clip, keys.Frames, keys.Frames.Select(f => f / rate).ToList());
+                        }
+
                         name = clip.name + " (in-betweened)";
                     }
                     else
@@ -203,30 +220,62 @@ namespace DeltaInterpolator.Editor.Baking
                             return;
                         }
 
-                        track = new KeyPoseTrack(skeleton, plan.FrameCount, rate, contract.UnitScale);
-                        ClipSampler.SampleInto(track, character, bones, _fromClip!, Enumerable.Range(0, plan.PastFrames).ToList(), plan.FromTimes);
-                        ClipSampler.SampleInto(track, character, bones, _toClip!, new[] { plan.TargetFrame }, new[] { plan.ToTime });
+                        track = new CharacterPoseTrack(rig, plan.FrameCount, 1.0 / rate);
+                        progress.Show("Sampling the key poses…", 0f);
+                        using (new AnimationModeScope())
+                        {
+                            ClipSampler.SampleInto(track, character, bones, _fromClip!, Enumerable.Range(0, plan.PastFrames).ToList(), plan.FromTimes);
+                            ClipSampler.SampleInto(track, character, bones, _toClip!, new[] { plan.TargetFrame }, new[] { plan.ToTime });
+                        }
+
                         name = _fromClip!.name + " to " + _toClip!.name;
                     }
 
-                    EditorUtility.DisplayProgressBar("In-between Baker", "Running the model…", 0.5f);
-                    BakeSettings settings = BakeSettings.ForModel(contract);
-                    settings.PastFrames = _pastFrames;
-                    var baker = new ClipBaker(inbetweener, settings);
-                    BakePlan bakePlan = baker.Plan(track.Motion.FrameCount, track.KeyFrames.ToArray());
-                    if (bakePlan.Warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the keys", string.Join("\n", bakePlan.Warnings), "Bake anyway", "Cancel"))
+                    BakeMethod model = BakeMethod.Model(inbetweener);
+                    model.Settings.PastFrames = _pastFrames;
+                    var methods = new List<BakeMethod> { model };
+                    if (_alsoSlerp) methods.Add(BakeMethod.Slerp());
+                    BakeRun run = CharacterBake.Run(contract, track, jointMap, methods, progress);
+                    var warnings = run.Methods[0].Plan.Warnings;
+                    if (warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the keys", string.Join("\n", warnings), "Save anyway", "Cancel"))
                     {
                         return;
                     }
 
-                    MotionClip baked = baker.Bake(track.Motion, bakePlan);
-                    EditorUtility.ClearProgressBar();
-                    ClipWriter.Save(CurveBuilder.Build(baked, paths, contract.UnitScale), rate, name);
+                    foreach (MethodBake result in run.Methods)
+                    {
+                        progress.Show($"Writing the {result.Method.Name} clip…", 0.95f);
+                        IReadOnlyList<ClipCurve> curves;
+                        if (humanoid)
+                        {
+                            // The poses go onto the bones to be read as human poses: in animation mode, and put back.
+                            using (new AnimationModeScope())
+                            {
+                                curves = ClipSampler.HumanoidClipCurves(animator, rig, bones, result.OnRig);
+                            }
+                        }
+                        else
+                        {
+                            curves = CurveBuilder.BuildCharacter(rig, result.OnRig, ClipSampler.Paths(character.transform, bones));
+                        }
+
+                        EditorUtility.ClearProgressBar();
+                        string clipName = result.Method.Name == "Model" ? name : $"{name} ({result.Method.Name})";
+                        ClipWriter.Save(curves, rate, clipName, humanoid ? typeof(Animator) : typeof(Transform));
+                    }
                 }
             }
             catch (ModelContractException e)
             {
                 EditorUtility.DisplayDialog("The model cannot be used", e.Message, "OK");
+            }
+            catch (JointMapException e)
+            {
+                EditorUtility.DisplayDialog("The character does not fit the model", e.Message, "OK");
+            }
+            catch (InvalidOperationException e)
+            {
+                EditorUtility.DisplayDialog("Cannot bake", e.Message, "OK");
             }
             catch (ArgumentException e)
             {
@@ -236,6 +285,15 @@ namespace DeltaInterpolator.Editor.Baking
             {
                 EditorUtility.ClearProgressBar();
             }
+        }
+
+        /// <summary>One bar over the whole bake: sampling, then every method's gaps (<see cref="InbetweenBake"/>'s reports, on this thread), then writing.</summary>
+        private sealed class ProgressBar : IProgress<BakeProgress>
+        {
+            public void Show(string info, float progress) => EditorUtility.DisplayProgressBar("In-between Baker", info, progress);
+
+            public void Report(BakeProgress value) =>
+                Show($"{value.Method}: {value.GapsDone} of {value.GapsTotal} gaps filled", 0.1f + 0.8f * value.GapsDone / Math.Max(1, value.GapsTotal));
         }
     }
 }

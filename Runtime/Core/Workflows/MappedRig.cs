@@ -56,6 +56,18 @@ namespace DeltaInterpolator.Core.Workflows
         /// <summary>The largest angle (degrees) between a mapped-back key rotation and the input's, before the input's were copied in (round-off: ~1e-13 on the CMU demo clip).</summary>
         public double KeyRoundTripDegrees { get; private set; }
 
+        /// <summary>
+        /// The seam of a rig whose map is already built (a character's, <see cref="Playback.CharacterRig.CreateJointMap"/>:
+        /// the component's map, so that the editor baker sees the character as the component does).
+        /// </summary>
+        /// <param name="contract">The model's contract (frame rate).</param>
+        /// <param name="map">Source: the rig's skeleton; target: the model's.</param>
+        /// <param name="inputFrameTime">Seconds per frame of the rig's clips.</param>
+        /// <param name="inputName">The rig's name, for messages.</param>
+        /// <param name="reference">What the map's source reference pose is, for <see cref="Description"/>.</param>
+        internal static MappedRig FromMap(ModelContract contract, SkeletonMap map, double inputFrameTime, string inputName, string reference) =>
+            new MappedRig(map, 1.0 / contract.FramesPerSecond, inputFrameTime, inputName, reference);
+
         /// <summary>Builds the map for <paramref name="input"/> onto <paramref name="contract"/>'s skeleton.</summary>
         /// <param name="contract">The model's contract (skeleton, frame rate).</param>
         /// <param name="input">The rig's clip.</param>

@@ -61,7 +61,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>Joints renamed, each joint's local frame turned by its own rotation, units in metres; and the JSON map that names the model's joints on it.</summary>
-        private static (MotionClip Clip, string Json) Rebuild(MotionClip clip, SkeletonMap mapA)
+        internal static (MotionClip Clip, string Json) Rebuild(MotionClip clip, SkeletonMap mapA)
         {
             Skeleton s = clip.Skeleton;
             int j = s.JointCount;
@@ -146,7 +146,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             return BvhReader.Parse(writer.ToString(), "rig-b.bvh").Motion;
         }
 
-        private static double[] World(MotionClip clip)
+        internal static double[] World(MotionClip clip)
         {
             int j = clip.Skeleton.JointCount;
             var positions = new double[clip.FrameCount * j * 3];

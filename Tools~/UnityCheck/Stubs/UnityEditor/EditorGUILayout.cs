@@ -13,6 +13,8 @@ namespace UnityEditor
 
         public static float FloatField(string label, float value, params GUILayoutOption[] options) => throw null!;
 
+        public static bool Toggle(string label, bool value, params GUILayoutOption[] options) => throw null!;
+
         public static int IntField(string label, int value, params GUILayoutOption[] options) => throw null!;
 
         public static void HelpBox(string message, MessageType type) => throw null!;
