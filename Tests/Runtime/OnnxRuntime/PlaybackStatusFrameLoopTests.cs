@@ -86,6 +86,26 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
+        public void BlendTimesEditedWhilePlayingApplyWithoutARebuild()
+        {
+            // The component copies edited blend times into the PlaybackSettings its player holds (no rebuild, the
+            // transition keeps playing); with blend-out edited to 0 the controller takes over on the next frame.
+            using var loop = new Loop(AnimationClockMode.Scaled, Decoding.MainThread, runsBeforeFailure: int.MaxValue);
+            loop.Status.Run();
+            loop.PlayFrames(30, 1.0 / 60);
+            var (root, rotations) = loop.ClipPose(3.0);
+            loop.Player.RequestTransition(root, rotations, 0.3);
+            Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
+            loop.PlayFrames(6, 1.0 / 60);
+            loop.Settings.BlendOutSeconds = 0;
+            while (loop.Completions.Count == 0) loop.Frame(1.0 / 60, 1.0 / 60);
+            Assert.That(loop.Player.Weight, Is.EqualTo(1.0), "the target frame shows the target");
+            loop.Frame(1.0 / 60, 1.0 / 60);
+            Assert.That(loop.Player.IsPlaying, Is.False);
+            Assert.That(loop.Player.Weight, Is.EqualTo(0.0));
+        }
+
+        [Test]
         public void WhilePausedANormalCharacterFreezesAndAnUnscaledOneKeepsPlaying()
         {
             using var normal = new Loop(AnimationClockMode.Scaled, Decoding.MainThread, runsBeforeFailure: int.MaxValue);
@@ -187,7 +207,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 ModelContract c = inbetweener.Contract;
                 var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.Skeleton.JointCount, seed: 11);
-                Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2 });
+                Settings = new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2 };
+                Player = new TransitionPlayer(map, _decoder, Settings);
                 Player.TransitionCompleted += e => Completions.Add(e);
                 _stream = new ArrayPoseStream(new double[3], new double[4 * c.Skeleton.JointCount]);
                 Shown = new ArrayPoseStream(new double[3], new double[4 * c.Skeleton.JointCount]);
@@ -195,6 +216,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
 
             public TransitionPlayer Player { get; }
+
+            /// <summary>The settings the player reads at each frame (the component edits them in place).</summary>
+            public PlaybackSettings Settings { get; }
 
             public AnimationClock Clock { get; }
 
