@@ -11,10 +11,9 @@ namespace DeltaInterpolator.Editor.Models
     /// callback, while the file is imported; a runtime Sentis model has none. For every <c>.onnx</c> that
     /// carries the <c>deltainterp</c> contract, the metadata is stored as a <see cref="TextAsset"/> inside
     /// the imported asset (sub-asset <see cref="SubAssetName"/>, text of <see cref="ModelMetadataText"/>).
-    /// The model asset's inspector (<see cref="InbetweeningModelEditor"/>) reads it the way the ONNX Runtime
-    /// backend reads a graph (metadata → <see cref="ModelContract.FromMetadata"/> → <see cref="ModelChecks"/>)
-    /// and copies the contract into <see cref="DeltaInterpolator.Unity.InbetweeningModel.ContractJson"/>, which
-    /// player builds carry. Other ONNX files are left alone.
+    /// After the import, <see cref="ModelContractPostprocessor"/> copies the contract into every
+    /// <see cref="DeltaInterpolator.Unity.InbetweeningModel.ContractJson"/> using the graph (player builds carry
+    /// it); the inspector (<see cref="InbetweeningModelEditor"/>) only reads it. Other ONNX files are left alone.
     /// Sentis finds this class by reflection (<c>TypeCache</c>) and creates it with its parameterless
     /// constructor; reimport models imported before the package was installed.
     /// </summary>

@@ -1,6 +1,4 @@
 #nullable enable
-using System.Collections.Generic;
-using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Unity;
 using UnityEditor;
@@ -12,9 +10,10 @@ namespace DeltaInterpolator.Editor.Models
     /// Inspector of the model asset: its fields, then the model checks (<see cref="ModelChecks"/>) as help
     /// boxes (info, warning, error), each with its remedy — the same list <c>inbetween check</c> prints.
     /// The contract comes the way the ONNX Runtime backend reads it: the graph's metadata, captured at
-    /// import (<see cref="ContractMetadataCapture"/>), read by <see cref="ModelContract.FromMetadata"/>;
-    /// when it differs from the asset's <see cref="InbetweeningModel.ContractJson"/> the asset is updated
-    /// (with undo). Checks run when the inspector opens and whenever a field changes, not on every repaint.
+    /// import (<see cref="ContractMetadataCapture"/>), read by <see cref="ModelContract.FromMetadata"/>.
+    /// The inspector only reads: the asset's <see cref="InbetweeningModel.ContractJson"/> is written by the
+    /// import (<see cref="ModelContractPostprocessor"/>), never by drawing; a difference is shown as a warning.
+    /// Checks run when the inspector opens and whenever a field changes, not on every repaint.
     /// </summary>
     [CustomEditor(typeof(InbetweeningModel))]
     internal sealed class InbetweeningModelEditor : UnityEditor.Editor
@@ -32,7 +31,7 @@ namespace DeltaInterpolator.Editor.Models
             }
         }
 
-        /// <summary>Every check of <paramref name="model"/>; captures the whole graph's contract into the asset.</summary>
+        /// <summary>Every check of <paramref name="model"/> (reads only; changes nothing).</summary>
         internal static ModelCheckReport Check(InbetweeningModel model)
         {
             var report = new ModelCheckReport();
@@ -42,18 +41,17 @@ namespace DeltaInterpolator.Editor.Models
                 return report;
             }
 
-            ModelContract? whole = Captured(model.WholeGraph, ModelGraphKind.Whole, report);
+            ModelContract? whole = ImportedContract.Read(model.WholeGraph, ModelGraphKind.Whole, report);
             if (whole == null)
             {
                 return report;
             }
 
-            string json = whole.ToJson();
-            if (json != model.ContractJson)
+            // The importer (ModelContractPostprocessor) owns the asset's copy; here it is only compared.
+            if (whole.ToJson() != model.ContractJson)
             {
-                Undo.RecordObject(model, "Capture model contract");
-                model.Assign(json, model.WholeGraph, model.KeysGraph, model.FrameGraph);
-                EditorUtility.SetDirty(model);
+                report.Warning(model.name, "the contract stored in this asset is not the one its whole graph was imported with",
+                    "it is captured when the asset or its graphs are imported: save the project (File > Save Project) or reimport this asset");
             }
 
             if ((model.KeysGraph == null) != (model.FrameGraph == null))
@@ -63,9 +61,9 @@ namespace DeltaInterpolator.Editor.Models
             }
             else if (model.KeysGraph != null && model.FrameGraph != null)
             {
-                ModelContract? keys = Captured(model.KeysGraph, ModelGraphKind.Keys, report);
+                ModelContract? keys = ImportedContract.Read(model.KeysGraph, ModelGraphKind.Keys, report);
                 if (keys != null) ModelChecks.SameExport(whole, keys, report);
-                ModelContract? frame = Captured(model.FrameGraph, ModelGraphKind.Frame, report);
+                ModelContract? frame = ImportedContract.Read(model.FrameGraph, ModelGraphKind.Frame, report);
                 if (frame != null) ModelChecks.SameExport(whole, frame, report);
             }
 
@@ -75,39 +73,6 @@ namespace DeltaInterpolator.Editor.Models
             }
 
             return report;
-        }
-
-        // metadata (captured at import) → ModelContract → graph-kind check: the ONNX Runtime backend's path.
-        private static ModelContract? Captured(Object graph, ModelGraphKind kind, ModelCheckReport report)
-        {
-            string path = AssetDatabase.GetAssetPath(graph);
-            TextAsset? captured = null;
-            foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(path))
-            {
-                if (o is TextAsset text && text.name == ContractMetadataCapture.SubAssetName) captured = text;
-            }
-
-            if (captured == null)
-            {
-                report.Error(path, "no model contract was captured when this file was imported",
-                    "expected an .onnx exported by `python3 -m deltainterp export`; reimport it with com.unity.ai.inference 2.4.0 or later and this package installed");
-                return null;
-            }
-
-            IReadOnlyDictionary<string, string> metadata;
-            try
-            {
-                metadata = ModelMetadataText.Read(captured.text, path);
-            }
-            catch (DataFormatException e)
-            {
-                report.Error(path, "the captured metadata cannot be read (" + e.Problem + ")", "reimport the file");
-                return null;
-            }
-
-            ModelContract? contract = ModelContract.FromMetadata(path, metadata, report);
-            if (contract != null) ModelChecks.GraphKind(contract, kind, report);
-            return contract;
         }
 
         internal static string Text(ModelCheck check) => string.IsNullOrEmpty(check.Remedy) ? check.Message : check.Message + "\n" + check.Remedy;

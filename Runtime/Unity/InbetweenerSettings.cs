@@ -1,3 +1,4 @@
+using System;
 using UnityEngine;
 
 namespace DeltaInterpolator.Unity
@@ -100,5 +101,10 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>Past model frames fed to the network (0: the model's trained maximum).</summary>
         public int PastFrames => pastFrames;
+
+        /// <summary>Raised when a field is edited (inspector, undo) in the Editor; components using the asset apply the change.</summary>
+        internal event Action<InbetweenerSettings>? Changed;
+
+        private void OnValidate() => Changed?.Invoke(this);
     }
 }

@@ -32,6 +32,11 @@ namespace DeltaInterpolator.Unity
     /// (fingers, twist bones) keep the character's own animation. With <c>Animator.applyRootMotion</c> on, a
     /// transition moves the character through the root motion (the stream's velocity) along the model's
     /// root trajectory (Core's <see cref="RootMotion"/>); off, it moves the root bone inside the character.
+    /// <para>Transitions run on the Animator's clock (<c>Animator.updateMode</c>, Core's <see cref="AnimationClock"/>):
+    /// Normal in scaled time (they freeze with <c>Time.timeScale = 0</c>), Fixed in physics steps, UnscaledTime
+    /// in real time. Settings may arrive after the component is added or enabled, and edits to them in play mode
+    /// apply (blend times at once, the rest by re-initialising). When the inference engine fails while playing,
+    /// the component logs one error naming the model and what to do, and disables itself (Core's <see cref="PlaybackStatus"/>).</para>
     /// </remarks>
     [RequireComponent(typeof(Animator))]
     [DisallowMultipleComponent]
@@ -61,16 +66,46 @@ namespace DeltaInterpolator.Unity
         private double[] _recordRotations = new double[0];
         private double _shownTime;
         private bool _shownPending;
+        private readonly AnimationClock _clock = new AnimationClock();
+        private readonly PlaybackStatus _status = new PlaybackStatus();
+        private PlaybackSettings? _playback;
+        private SettingsSnapshot? _built;
+        private InbetweenerSettings? _listening;
+        private bool _isEnabled;
+        private bool _settingsChanged;
+        private string _modelName = "";
+        private string _engineName = "";
+
+        /// <summary>
+        /// The sorting order of the component's animation output: after the Animator Controller (whose output
+        /// sorts at 0) and before IK and constraint layers such as Animation Rigging's (its RigBuilder sorts at
+        /// 1000), so rigs constrain the transition's pose rather than being overwritten by it.
+        /// </summary>
+        public const ushort LayerSortingOrder = 500;
 
         /// <summary>Reports each request once: when the character shows its target, or when a newer request or <see cref="Cancel"/> ends it first.</summary>
         public event Action<TransitionCompletion>? TransitionCompleted;
 
-        /// <summary>The settings asset (assign before the component is enabled).</summary>
+        /// <summary>
+        /// The settings asset. May be assigned at any time (e.g. after <c>AddComponent</c>): an enabled component
+        /// initialises from it at once; a different asset re-initialises it.
+        /// </summary>
         public InbetweenerSettings? Settings
         {
             get => settings;
-            set => settings = value;
+            set
+            {
+                if (settings == value) return;
+                settings = value;
+                if (_isEnabled) Rebuild();
+            }
         }
+
+        /// <summary>Waiting (no settings yet), running, or failed (the Console shows why); see <see cref="FailureReason"/>.</summary>
+        public PlaybackState State => _status.State;
+
+        /// <summary>Why the component is not running (what is missing, or what failed and what to do); empty while running.</summary>
+        public string FailureReason => _status.Reason;
 
         /// <summary>True while a transition plays or blends out.</summary>
         public bool IsPlaying => _player != null && _player.IsPlaying;
@@ -144,19 +179,82 @@ namespace DeltaInterpolator.Unity
 
         private void OnEnable()
         {
+            _isEnabled = true;
+            Rebuild();
+        }
+
+        private void OnDisable()
+        {
+            _isEnabled = false;
+            Listen(null);
+            TearDown();
+            // A failure keeps its reason (the component was disabled because of it); otherwise it waits to be enabled.
+            if (_status.State != PlaybackState.Failed) _status.Wait("the component is disabled; enable it");
+        }
+
+        // The inspector changed a field of the component (e.g. another settings asset) in play mode: re-initialise
+        // at the next frame (OnValidate may come during deserialization, where building a graph is not allowed).
+        private void OnValidate() => _settingsChanged = true;
+
+        // The settings asset was edited (its OnValidate).
+        private void OnSettingsChanged(InbetweenerSettings changed) => _settingsChanged = true;
+
+        private void Listen(InbetweenerSettings? s)
+        {
+            if (_listening == s) return;
+            if (_listening != null) _listening.Changed -= OnSettingsChanged;
+            _listening = s;
+            if (_listening != null) _listening.Changed += OnSettingsChanged;
+        }
+
+        // Builds from the current settings; without settings it waits (no error: they may be assigned later).
+        private void Rebuild()
+        {
+            TearDown();
+            _settingsChanged = false;
+            Listen(settings);
+            if (settings == null)
+            {
+                _status.Wait("no settings asset is assigned; create one (Assets > Create > Δ-Interpolator > In-betweener Settings) and assign it to Settings");
+                return;
+            }
+
             try
             {
                 Build();
+                _status.Run();
             }
             catch (Exception e) when (e is DataFormatException || e is ArgumentException || e is InvalidOperationException || e is JointMapException)
             {
-                Debug.LogError($"{name}: Motion Inbetweener disabled: {e.Message}", this);
-                TearDown();
-                enabled = false;
+                Stop(e.Message, e);
             }
         }
 
-        private void OnDisable() => TearDown();
+        // Applies edited settings: blend times at once; a change of what the build used re-initialises.
+        private void ApplySettingsChange()
+        {
+            _settingsChanged = false;
+            if (settings != _listening || settings == null || _built == null || !_built.Matches(settings))
+            {
+                Rebuild();
+                return;
+            }
+
+            if (_playback != null)
+            {
+                _playback.BlendInSeconds = settings.BlendInSeconds;
+                _playback.BlendOutSeconds = settings.BlendOutSeconds;
+            }
+        }
+
+        // One error in the Console, and the component disabled (enable it again to retry).
+        private void Stop(string reason, Exception? error)
+        {
+            _status.Fail(reason, error);
+            Debug.LogError($"{name}: Motion Inbetweener disabled: {reason}", this);
+            TearDown();
+            enabled = false;
+        }
 
         // Profiler markers (Window → Analysis → Profiler, CPU timeline) around the component's per-frame stages:
         // recording the pose shown last frame into the history, advancing the transition (which decodes
@@ -166,26 +264,52 @@ namespace DeltaInterpolator.Unity
         private static readonly ProfilerMarker s_Advance = new ProfilerMarker("MotionInbetweener.Advance");
         private static readonly ProfilerMarker s_Request = new ProfilerMarker("MotionInbetweener.RequestTransition");
 
+        // The transition advances where the Animator does: rendered frames (Normal, UnscaledTime) or physics
+        // steps (Fixed), by the step of its clock (Core's AnimationClock decides; only Unity's values are read here).
         private void Update()
         {
-            if (_player == null || _rootMotion == null) return;
+            if (_settingsChanged) ApplySettingsChange();
+            if (_status.State == PlaybackState.Waiting && settings != null) Rebuild();
+            Tick(FrameCallback.Update);
+        }
+
+        private void FixedUpdate() => Tick(FrameCallback.FixedUpdate);
+
+        private void Tick(FrameCallback callback)
+        {
+            if (_player == null || _rootMotion == null || _animator == null) return;
+            _clock.Mode = (AnimationClockMode)(int)_animator.updateMode;
+            if (!_clock.Advance(callback, Time.deltaTime, Time.unscaledDeltaTime, Time.fixedDeltaTime)) return;
             // Where the character stands now is where the last frame was shown (the Animator applied its root motion since).
             BeginRootMotionFrame();
             using (s_RecordHistory.Auto()) FlushShownPose();
-            double time = Time.timeAsDouble;
-            using (s_Advance.Auto()) _player.BeginFrame(time);
+            double time = _clock.Time;
+            bool played;
+            using (s_Advance.Auto()) played = _status.TryBeginFrame(_player, time, _modelName, _engineName);
+            if (!played)
+            {
+                if (_status.State == PlaybackState.Failed)
+                {
+                    // The shared model is broken: the next character to enable loads it afresh.
+                    if (_decoder != null) SharedDecoders.Discard(_decoder);
+                    Stop(_status.Reason, _status.Error);
+                }
+
+                return;
+            }
+
             Span<double> pose = _pose.AsSpan();
             _player.PoseRoot.CopyTo(pose.Slice(0, 3));
             _player.PoseRotations.CopyTo(pose.Slice(3));
             var controller = new Vector3D(_rootVelocity[3], _rootVelocity[4], _rootVelocity[5]);
-            _rootMotion.Plan(_player, time, Time.deltaTime, controller, pose.Slice(0, 3), pose.Slice(3, 4));
+            _rootMotion.Plan(_player, time, _clock.LastStep, controller, pose.Slice(0, 3), pose.Slice(3, 4));
             Vector3D velocity = _rootMotion.TransitionVelocity;
             _rootVelocity[0] = velocity.X;
             _rootVelocity[1] = velocity.Y;
             _rootVelocity[2] = velocity.Z;
             _rootVelocity[6] = _rootMotion.Enabled ? 1 : 0;
             _weight[0] = _player.Weight;
-            _shownTime = Time.timeAsDouble;
+            _shownTime = time;
             _shownPending = true;
         }
 
@@ -196,14 +320,18 @@ namespace DeltaInterpolator.Unity
             IInferenceBackendFactory factory = InferenceBackends.Find(s.Backend)
                 ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
             _animator = GetComponent<Animator>();
+            _modelName = model.name;
+            _engineName = factory.Name;
             _decoder = SharedDecoders.Acquire(model, factory);
             ModelContract contract = _decoder.Contract;
             CharacterRig rig = RigCollector.Collect(_animator, s, contract.Skeleton, out Core.Retargeting.JointMap jointMap, out _bones);
             SkeletonJointMap map = rig.CreateJointMap(contract.Skeleton, jointMap);
             RootBone = 0;
             _rootMotion = new RootMotion(rig.Armature) { Enabled = _animator.applyRootMotion };
-            var playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames };
-            _player = new TransitionPlayer(map, _decoder, playback);
+            // The player reads these at each request and frame, so edited blend times apply without a rebuild.
+            _playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames };
+            _player = new TransitionPlayer(map, _decoder, _playback);
+            _built = SettingsSnapshot.Take(s);
             _player.TransitionCompleted += OnCompleted;
             int n = _bones.Length;
             _targetRotations = new double[4 * n];
@@ -229,8 +357,11 @@ namespace DeltaInterpolator.Unity
             output.SetSourcePlayable(playable);
             // Read what the Animator Controller produced (the outputs before this one), then blend over it.
             output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
+            output.SetSortingOrder(LayerSortingOrder);
             _graph.Play();
-            _shownPending = false;
+            // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
+            _shownTime = _clock.Time;
+            _shownPending = true;
         }
 
         private void TearDown()
@@ -246,6 +377,8 @@ namespace DeltaInterpolator.Unity
             _player = null;
             if (_decoder != null) SharedDecoders.Release(_decoder);
             _decoder = null;
+            _playback = null;
+            _built = null;
         }
 
         private int Request(TransitionPlayer player, float seconds)
@@ -298,7 +431,14 @@ namespace DeltaInterpolator.Unity
 
         private TransitionPlayer Running()
         {
-            if (_player == null) throw new InvalidOperationException($"{name}: the Motion Inbetweener is not running (disabled, or its model failed to load: see the Console)");
+            // Settings assigned through serialization or edited this frame: initialise now rather than at the next Update.
+            if (_isEnabled && _settingsChanged) ApplySettingsChange();
+            if (_isEnabled && _status.State == PlaybackState.Waiting && settings != null) Rebuild();
+            if (_player == null)
+            {
+                throw new InvalidOperationException($"{name}: the Motion Inbetweener is not running: {_status.Reason}");
+            }
+
             return _player;
         }
 

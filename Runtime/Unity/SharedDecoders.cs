@@ -11,6 +11,7 @@ namespace DeltaInterpolator.Unity
     internal static class SharedDecoders
     {
         private static readonly Dictionary<(InbetweeningModel, string), Entry> s_entries = new Dictionary<(InbetweeningModel, string), Entry>();
+        private static readonly List<Entry> s_discarded = new List<Entry>();
 
         /// <exception cref="ModelContractException">The model does not load or fit the contract.</exception>
         public static TransitionDecoder Acquire(InbetweeningModel model, IInferenceBackendFactory factory)
@@ -37,6 +38,34 @@ namespace DeltaInterpolator.Unity
                     decoder.Dispose();
                 }
 
+                return;
+            }
+
+            for (int i = 0; i < s_discarded.Count; i++)
+            {
+                Entry entry = s_discarded[i];
+                if (entry.Decoder != decoder) continue;
+                if (--entry.Users == 0)
+                {
+                    s_discarded.RemoveAt(i);
+                    decoder.Dispose();
+                }
+
+                return;
+            }
+        }
+
+        /// <summary>
+        /// The decoder's engine failed: the next <see cref="Acquire"/> of its model loads a fresh one, while the
+        /// characters still holding this one release it as usual (the last disposes it).
+        /// </summary>
+        public static void Discard(TransitionDecoder decoder)
+        {
+            foreach (KeyValuePair<(InbetweeningModel, string), Entry> e in s_entries)
+            {
+                if (e.Value.Decoder != decoder) continue;
+                s_entries.Remove(e.Key);
+                s_discarded.Add(e.Value);
                 return;
             }
         }

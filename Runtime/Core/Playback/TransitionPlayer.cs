@@ -271,7 +271,7 @@ namespace DeltaInterpolator.Core.Playback
         /// (<see cref="PoseRoot"/>, <see cref="PoseRotations"/>, <see cref="Weight"/>) and fires
         /// <see cref="TransitionCompleted"/> when this frame shows the target.
         /// </summary>
-        /// <exception cref="InvalidOperationException">The network failed on the decoder; the transition is ended.</exception>
+        /// <exception cref="InferenceFailedException">The network failed on the decoder; the transition is ended.</exception>
         public void BeginFrame(double time)
         {
             _inFrame = true;
@@ -327,7 +327,9 @@ namespace DeltaInterpolator.Core.Playback
                 Exception error = job.Error;
                 Interrupt(time);
                 _weight = 0;
-                throw new InvalidOperationException("the in-betweening network failed: " + error.Message, error);
+                // The request is reported (not reached) before the failure propagates: every request completes once.
+                FlushEvents();
+                throw new InferenceFailedException(error);
             }
 
             double s = time - _start;

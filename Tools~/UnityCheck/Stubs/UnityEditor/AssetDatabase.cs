@@ -16,5 +16,12 @@ namespace UnityEditor
         public static string GetAssetPath(Object assetObject) => throw null!;
 
         public static Object[] LoadAllAssetsAtPath(string assetPath) => throw null!;
+
+        public static string GUIDToAssetPath(string guid) => throw null!;
+
+        public static void SaveAssetIfDirty(Object obj) => throw null!;
+
+        // source: unity:Editor/Mono/AssetDatabase/AssetDatabaseSearching.cs
+        public static string[] FindAssets(string filter) => throw null!;
     }
 }

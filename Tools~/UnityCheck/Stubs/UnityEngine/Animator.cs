@@ -1,6 +1,17 @@
 namespace UnityEngine
 {
     // source: unity:Modules/Animation/ScriptBindings/Animator.bindings.cs
+    public enum AnimatorUpdateMode
+    {
+        Normal = 0,
+        Fixed = 1,
+        UnscaledTime = 2,
+
+        [System.Obsolete("Enum member AnimatorUpdateMode.AnimatePhysics has been deprecated. Use AnimatorUpdateMode.Fixed to evaluate in FixedUpdate time and Animator.animatePhysics to sync transforms for physics. (UnityUpgradable) -> Fixed", true)]
+        AnimatePhysics = 1,
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/Animator.bindings.cs
     public partial class Animator : Behaviour
     {
         public bool isHuman => throw null!;
@@ -8,6 +19,8 @@ namespace UnityEngine
         public bool applyRootMotion { get => throw null!; set => throw null!; }
 
         public Avatar avatar { get => throw null!; set => throw null!; }
+
+        public AnimatorUpdateMode updateMode { get => throw null!; set => throw null!; }
 
         public Transform GetBoneTransform(HumanBodyBones humanBoneId) => throw null!;
     }

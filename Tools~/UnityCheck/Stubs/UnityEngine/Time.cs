@@ -6,5 +6,9 @@ namespace UnityEngine
         public static double timeAsDouble => throw null!;
 
         public static float deltaTime => throw null!;
+
+        public static float unscaledDeltaTime => throw null!;
+
+        public static float fixedDeltaTime { get => throw null!; set => throw null!; }
     }
 }

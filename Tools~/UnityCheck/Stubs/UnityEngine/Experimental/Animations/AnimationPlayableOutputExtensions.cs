@@ -13,5 +13,9 @@ namespace UnityEngine.Experimental.Animations
     public static partial class AnimationPlayableOutputExtensions
     {
         public static void SetAnimationStreamSource(this AnimationPlayableOutput output, AnimationStreamSource streamSource) => throw null!;
+
+        public static ushort GetSortingOrder(this AnimationPlayableOutput output) => throw null!;
+
+        public static void SetSortingOrder(this AnimationPlayableOutput output, ushort sortingOrder) => throw null!;
     }
 }

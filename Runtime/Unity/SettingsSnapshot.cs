@@ -1,0 +1,52 @@
+using UnityEngine;
+
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>
+    /// What a <see cref="MotionInbetweener"/> was built from (model, engine, rig, joint map, reference pose,
+    /// past frames): an edit to any of these re-initialises the component, while an edit of the blend times
+    /// or the default length applies without one (they are read at each request and frame).
+    /// </summary>
+    internal sealed class SettingsSnapshot
+    {
+        private InbetweeningModel? _model;
+        private string _backend = "";
+        private CharacterRigKind _rig;
+        private BuiltInJointMap _jointMap;
+        private TextAsset? _jointMapJson;
+        private JointBinding[] _joints = new JointBinding[0];
+        private ReferencePoseSource _referencePose;
+        private AnimationClip? _referenceClip;
+        private float _referenceClipTime;
+        private int _pastFrames;
+
+        public static SettingsSnapshot Take(InbetweenerSettings s) => new SettingsSnapshot
+        {
+            _model = s.Model,
+            _backend = s.Backend,
+            _rig = s.Rig,
+            _jointMap = s.JointMap,
+            _jointMapJson = s.JointMapJson,
+            _joints = s.Joints != null ? (JointBinding[])s.Joints.Clone() : new JointBinding[0],
+            _referencePose = s.ReferencePose,
+            _referenceClip = s.ReferenceClip,
+            _referenceClipTime = s.ReferenceClipTime,
+            _pastFrames = s.PastFrames,
+        };
+
+        /// <summary>True when <paramref name="s"/> still builds the same component.</summary>
+        public bool Matches(InbetweenerSettings s)
+        {
+            if (_model != s.Model || _backend != s.Backend || _rig != s.Rig || _jointMap != s.JointMap || _jointMapJson != s.JointMapJson) return false;
+            if (_referencePose != s.ReferencePose || _referenceClip != s.ReferenceClip || _referenceClipTime != s.ReferenceClipTime || _pastFrames != s.PastFrames) return false;
+            JointBinding[] joints = s.Joints ?? new JointBinding[0];
+            if (joints.Length != _joints.Length) return false;
+            for (int i = 0; i < joints.Length; i++)
+            {
+                if (joints[i].joint != _joints[i].joint || joints[i].bone != _joints[i].bone) return false;
+            }
+
+            return true;
+        }
+    }
+}
