@@ -14,7 +14,7 @@ namespace DeltaInterpolator.Tests.Cli
     /// The same motion on two differently built rigs bakes to the same world motion through <c>bake --map</c>
     /// (issue 15): the demo clip as shipped, and as a BVH of another rig (renamed joints read through a JSON map
     /// file, other local bone frames, metres, XYZ Euler channels), both baked by the command line with the
-    /// model (the BVH it writes) — every joint's world position agrees to 1e-3 of a leg length.
+    /// model and with SLERP (the BVH it writes) — every joint's world position agrees to 1e-3 of a leg length.
     /// </summary>
     public sealed class TwoRigBakeVerbTests
     {
@@ -56,17 +56,20 @@ namespace DeltaInterpolator.Tests.Cli
             string map = Path.Combine(_dir, "rig-b-map.json");
             File.WriteAllText(map, json);
 
-            string outA = Path.Combine(_dir, "a-out.bvh"), outB = Path.Combine(_dir, "b-out.bvh");
-            CliHarness.AssertSuccess(CliHarness.Run("bake", rigA, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--out", outA));
-            CliHarness.AssertSuccess(CliHarness.Run("bake", rigB, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--map", map, "--out", outB));
-            double[] a = TwoRigBakeTests.World(BvhReader.Read(outA).Motion);
-            double[] b = TwoRigBakeTests.World(BvhReader.Read(outB).Motion);
-            Assert.That(b.Length, Is.EqualTo(a.Length));
-            double worst = 0;
-            for (int i = 0; i < a.Length; i++) worst = Math.Max(worst, Math.Abs(a[i] - b[i] / 0.01));
             double leg = mapped.LegLength;
-            TestContext.WriteLine($"bake --map: largest world position difference between the rigs {worst / leg:E2} leg lengths");
-            Assert.That(worst / leg, Is.LessThan(1e-3));
+            foreach (string method in new[] { "model", "slerp" })
+            {
+                string outA = Path.Combine(_dir, method + "-a.bvh"), outB = Path.Combine(_dir, method + "-b.bvh");
+                CliHarness.AssertSuccess(CliHarness.Run("bake", rigA, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--method", method, "--out", outA));
+                CliHarness.AssertSuccess(CliHarness.Run("bake", rigB, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--map", map, "--method", method, "--out", outB));
+                double[] a = TwoRigBakeTests.World(BvhReader.Read(outA).Motion);
+                double[] b = TwoRigBakeTests.World(BvhReader.Read(outB).Motion);
+                Assert.That(b.Length, Is.EqualTo(a.Length));
+                double worst = 0;
+                for (int i = 0; i < a.Length; i++) worst = Math.Max(worst, Math.Abs(a[i] - b[i] / 0.01));
+                TestContext.WriteLine($"bake --map --method {method}: largest world position difference between the rigs {worst / leg:E2} leg lengths");
+                Assert.That(worst / leg, Is.LessThan(1e-3), method);
+            }
         }
     }
 }
