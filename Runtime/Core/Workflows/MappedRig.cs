@@ -74,25 +74,11 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="referenceFrame">The input frame that is its reference pose, or null for <see cref="ReferencePose.Default"/>.</param>
         /// <param name="inputPath">The input's path, for messages.</param>
         /// <param name="jointMap">A user joint map, or null for the best built-in one.</param>
-        /// <exception cref="JointMapException">Joints missing, or the reference frame is not a frame of the clip.</exception>
+        /// <exception cref="JointMapException">Joints missing.</exception>
+        /// <exception cref="MotionRequestException">The reference frame is not a frame of the clip.</exception>
         public static MappedRig Create(ModelContract contract, MotionClip input, int? referenceFrame, string inputPath, JointMap? jointMap = null)
         {
-            ReferencePose source;
-            if (referenceFrame == null)
-            {
-                source = ReferencePose.Default(input.Skeleton);
-            }
-            else
-            {
-                int count = input.FrameCount;
-                if (referenceFrame.Value < 0 || referenceFrame.Value >= count)
-                {
-                    throw new JointMapException(inputPath, $"reference frame {referenceFrame.Value} is not a frame of the file", $"expected 0 to {count - 1}");
-                }
-
-                source = ReferencePose.FromFrame(input, referenceFrame.Value);
-            }
-
+            ReferencePose source = MotionRetargeting.Reference(input, referenceFrame, "reference frame", inputPath);
             SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath);
             return new MappedRig(map, 1.0 / contract.FramesPerSecond, input.FrameTime, inputPath,
                 referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));

@@ -66,7 +66,8 @@ namespace DeltaInterpolator.Core.Workflows
             return new MotionClip(trimmed.Skeleton, trimmed.FrameCount, frameTime, trimmed.LocalPositions, trimmed.LocalRotations);
         }
 
-        private static ReferencePose Reference(MotionClip clip, int? frame, string what, string name)
+        /// <summary>The clip's default pose, or its frame <paramref name="frame"/> (refused naming <paramref name="what"/> when it is not a frame of the clip): the one rule of every workflow.</summary>
+        internal static ReferencePose Reference(MotionClip clip, int? frame, string what, string name)
         {
             if (frame == null) return ReferencePose.Default(clip.Skeleton);
             if (frame.Value < 0 || frame.Value >= clip.FrameCount)

@@ -17,7 +17,8 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="source">Where it came from, for messages.</param>
         /// <param name="referenceFrame">The clip frame that is the rig's reference pose, or null for its default pose.</param>
         /// <param name="map">A user joint map, or null for the best built-in one.</param>
-        /// <exception cref="JointMapException">The rig cannot be mapped (joints missing, a reference frame outside the clip).</exception>
+        /// <exception cref="JointMapException">The rig cannot be mapped (joints missing).</exception>
+        /// <exception cref="MotionRequestException">The reference frame is not a frame of the clip.</exception>
         public static IRigRetargeting For(ModelContract contract, MotionClip clip, string source, int? referenceFrame = null, JointMap? map = null)
         {
             var report = new ModelCheckReport();

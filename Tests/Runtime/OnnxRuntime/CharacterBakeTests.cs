@@ -23,17 +23,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     [TestFixture]
     public sealed class CharacterBakeTests
     {
-        private const string Sample = "Samples~/Demo/cmu_09_12_walk_navigate.bvh";
         private const double Metres = 0.01;
 
         [Test]
         public void TheEditorPathOnAnotherRigBakesWhatTheCliBakes()
         {
-            string samplePath = ShippedModels.Find(Sample);
-            string modelPath = ShippedModels.Find(ShippedModels.Default);
-            if (!File.Exists(samplePath) || !File.Exists(modelPath)) Assert.Ignore($"{Sample} or {ShippedModels.Default} not found above {AppContext.BaseDirectory}");
-            MotionClip original = BvhReader.Read(samplePath).Motion.Excerpt(0, 481); // the T-pose and 4 s of walking
-            using Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(modelPath), LazyGraphs.None);
+            MotionClip original = TwoRigBakeTests.DemoWalk(); // the T-pose and 4 s of walking
+            using Inbetweener model = TwoRigBakeTests.ShippedModel();
 
             // The CLI: `bake --reference-frame 0` on the BVH.
             IRigRetargeting cli = RigRetargeting.For(model.Contract, original, "cmu.bvh", referenceFrame: 0);

@@ -31,11 +31,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void TheSameMotionOnTwoRigsBakesToTheSameWorldMotion()
         {
-            string samplePath = ShippedModels.Find(Sample);
-            string modelPath = ShippedModels.Find(ShippedModels.Default);
-            if (!File.Exists(samplePath) || !File.Exists(modelPath)) Assert.Ignore($"{Sample} or {ShippedModels.Default} not found above {AppContext.BaseDirectory}");
-            MotionClip original = BvhReader.Read(samplePath).Motion.Excerpt(0, 481); // the T-pose and 4 s of walking
-            using Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(modelPath), LazyGraphs.None);
+            MotionClip original = DemoWalk();
+            using Inbetweener model = ShippedModel();
 
             IRigRetargeting rigA = RigRetargeting.For(model.Contract, original, "cmu.bvh", referenceFrame: 0);
             (MotionClip rebuilt, string json) = Rebuild(original, ((MappedRig)rigA).Map);
@@ -58,6 +55,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Assert.That(worst / leg, Is.LessThan(1e-3), $"{method}: largest world position difference {worst / leg:E2} leg lengths");
                 TestContext.WriteLine($"{method}: largest world position difference between the rigs {worst / leg:E2} leg lengths");
             }
+        }
+
+        /// <summary>The demo clip's T-pose and first 4 s of walking (the test is skipped, saying why, without it).</summary>
+        internal static MotionClip DemoWalk()
+        {
+            string samplePath = ShippedModels.Find(Sample);
+            if (!File.Exists(samplePath)) Assert.Ignore($"{Sample} not found above {AppContext.BaseDirectory}");
+            return BvhReader.Read(samplePath).Motion.Excerpt(0, 481);
+        }
+
+        /// <summary>The shipped default model, whole graph only (the test is skipped, saying why, without it).</summary>
+        internal static Inbetweener ShippedModel()
+        {
+            string modelPath = ShippedModels.Find(ShippedModels.Default);
+            if (!File.Exists(modelPath)) Assert.Ignore($"{ShippedModels.Default} not found above {AppContext.BaseDirectory}");
+            return InbetweenerLoader.Load(new OnnxModelFiles(modelPath), LazyGraphs.None);
         }
 
         /// <summary>Joints renamed, each joint's local frame turned by its own rotation, units in metres; and the JSON map that names the model's joints on it.</summary>

@@ -33,13 +33,11 @@ namespace DeltaInterpolator.Tests.Cli
         [Test]
         public void BakeMapBakesAnotherRigToTheSameWorldMotion()
         {
-            string root = TestEnvironment.RepositoryRoot!;
-            string sample = Path.Combine(root, "Samples~", "Demo", "cmu_09_12_walk_navigate.bvh");
-            MotionClip original = BvhReader.Read(sample).Motion.Excerpt(0, 481);
+            MotionClip original = TwoRigBakeTests.DemoWalk();
             string rigA = Path.Combine(_dir, "rig-a.bvh");
             BvhWriter.Write(BvhAnimation.ForSkeleton(original, rigA), rigA);
             ModelContract contract;
-            using (Inbetweener model = InbetweenerLoader.Load(new OnnxModelFiles(ShippedModels.Find(ShippedModels.Default)), LazyGraphs.None)) contract = model.Contract;
+            using (Inbetweener model = TwoRigBakeTests.ShippedModel()) contract = model.Contract;
             var mapped = (MappedRig)RigRetargeting.For(contract, original, rigA, referenceFrame: 0);
             (MotionClip rebuilt, string json) = TwoRigBakeTests.Rebuild(original, mapped.Map);
             string rigB = Path.Combine(_dir, "rig-b.bvh");
