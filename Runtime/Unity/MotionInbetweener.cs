@@ -58,7 +58,8 @@ namespace DeltaInterpolator.Unity
         private NativeArray<double> _weight;
         private double[] _targetRoot = new double[3];
         private double[] _targetRotations = new double[0];
-        private Quaternion[] _savedRotations = new Quaternion[0];
+        private ClipTargetSampler? _targetSampler;
+        private RootFrame _deferredFrame;
         private RootMotion? _rootMotion;
         // [0..2] the transition's root velocity (main thread → job), [3..5] the controller's (job → main thread), [6] 1 with root motion on.
         private NativeArray<double> _rootVelocity;
@@ -121,7 +122,9 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// Transition to the pose <paramref name="clip"/> shows at <paramref name="clipTime"/>, arriving in
-        /// <paramref name="seconds"/> (≤ 0: the settings' default).
+        /// <paramref name="seconds"/> (≤ 0: the settings' default). The pose is read from the clip through the
+        /// component's playable graph in this frame's animation evaluation (the scene is never written to); the
+        /// transition starts once it is read and still arrives <paramref name="seconds"/> after this call.
         /// </summary>
         /// <returns>The request's id, as <see cref="TransitionCompleted"/> reports it.</returns>
         /// <exception cref="InvalidOperationException">The component is not running (disabled, or its model failed to load) or no frame was shown yet.</exception>
@@ -129,16 +132,20 @@ namespace DeltaInterpolator.Unity
         {
             if (clip == null) throw new ArgumentNullException(nameof(clip));
             TransitionPlayer player = Running();
-            // Sample the clip onto the bones, read the pose, and put the bones back: the Animator
-            // overwrites them in its next evaluation anyway, but scripts reading them this frame must not see it.
-            int n = _bones.Length;
-            Vector3 savedRoot = _bones[RootBone].localPosition;
-            for (int b = 0; b < n; b++) _savedRotations[b] = _bones[b].localRotation;
-            clip.SampleAnimation(gameObject, clipTime);
-            ReadBones(_targetRoot, _targetRotations);
-            for (int b = 0; b < n; b++) _bones[b].localRotation = _savedRotations[b];
-            _bones[RootBone].localPosition = savedRoot;
-            return Request(player, seconds);
+            using (s_Request.Auto())
+            {
+                // The clip's pose is read through the playable graph in this frame's animation evaluation (the
+                // scene is never written); the request waits for it and arrives when asked, from the history
+                // and the place where the character stands now.
+                BeginRootMotionFrame();
+                FlushShownPose();
+                float length = seconds > 0 ? seconds : settings!.DefaultTransitionSeconds;
+                WarnOutsideTrainedRange(player, length);
+                int id = player.DeferTransition(length);
+                _deferredFrame = RigCollector.WorldFrame(transform);
+                _targetSampler!.Sample(clip, clipTime);
+                return id;
+            }
         }
 
         /// <summary>
@@ -283,6 +290,7 @@ namespace DeltaInterpolator.Unity
             // Where the character stands now is where the last frame was shown (the Animator applied its root motion since).
             BeginRootMotionFrame();
             using (s_RecordHistory.Auto()) FlushShownPose();
+            StartSampledTarget();
             double time = _clock.Time;
             bool played;
             using (s_Advance.Auto()) played = _status.TryBeginFrame(_player, time, _modelName, _engineName);
@@ -336,7 +344,6 @@ namespace DeltaInterpolator.Unity
             int n = _bones.Length;
             _targetRotations = new double[4 * n];
             _recordRotations = new double[4 * n];
-            _savedRotations = new Quaternion[n];
             _handles = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
             for (int b = 0; b < n; b++) _handles[b] = _animator.BindStreamTransform(_bones[b]);
             _pose = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
@@ -358,6 +365,8 @@ namespace DeltaInterpolator.Unity
             // Read what the Animator Controller produced (the outputs before this one), then blend over it.
             output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
             output.SetSortingOrder(LayerSortingOrder);
+            // Clip targets are read by a pass-through layer just before this one.
+            _targetSampler = new ClipTargetSampler(_graph, _animator, _handles, RootBone, (ushort)(LayerSortingOrder - 1));
             _graph.Play();
             // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
             _shownTime = _clock.Time;
@@ -367,6 +376,8 @@ namespace DeltaInterpolator.Unity
         private void TearDown()
         {
             if (_graph.IsValid()) _graph.Destroy();
+            _targetSampler?.Dispose();
+            _targetSampler = null;
             if (_handles.IsCreated) _handles.Dispose();
             if (_pose.IsCreated) _pose.Dispose();
             if (_shown.IsCreated) _shown.Dispose();
@@ -421,6 +432,15 @@ namespace DeltaInterpolator.Unity
             shown.Slice(3).CopyTo(_recordRotations);
             _rootMotion.ShownToMotionSpace(_recordRoot, new Span<double>(_recordRotations, 0, 4));
             _player.Record(_shownTime, _recordRoot, _recordRotations);
+        }
+
+        // A clip target requested earlier, once the animation evaluation has read it: placed where the
+        // character stood when it was requested.
+        private void StartSampledTarget()
+        {
+            if (!_player!.HasDeferredTransition || !_targetSampler!.TryRead(_targetRoot, _targetRotations)) return;
+            _rootMotion!.TargetToMotionSpace(_deferredFrame, _targetRoot, new Span<double>(_targetRotations, 0, 4));
+            _player.CompleteDeferredTransition(_targetRoot, _targetRotations);
         }
 
         private void BeginRootMotionFrame()

@@ -150,7 +150,9 @@ namespace DeltaInterpolator.Unity
             }
         }
 
-        // The pose the clip shows at a time: sampled onto the bones, read, and the bones put back.
+        // The reference pose a clip shows at a time: sampled onto the bones, read, and the bones put back in the
+        // same call. Only at start (the rig must exist before the first frame, and the component's playable graph,
+        // which samples run-time targets, is built from it), so nothing else can observe the bones meanwhile.
         private static void ClipFramePose(Animator animator, AnimationClip clip, float time, Transform[] bones, double[] positions, double[] rotations)
         {
             var savedPositions = new Vector3[bones.Length];

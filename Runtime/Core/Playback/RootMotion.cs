@@ -16,7 +16,7 @@ namespace DeltaInterpolator.Core.Playback
     /// <remarks>
     /// <para>Each rendered frame, main thread, with the character's world frame (where the last frame was
     /// shown): <see cref="BeginFrame"/>; <see cref="ShownToMotionSpace"/> on the pose shown last frame
-    /// before <see cref="TransitionPlayer.Record"/>, and <see cref="TargetToMotionSpace"/> on a target before
+    /// before <see cref="TransitionPlayer.Record"/>, and <see cref="TargetToMotionSpace(Span{double}, Span{double})"/> on a target before
     /// <see cref="TransitionPlayer.RequestTransition"/>; after <see cref="TransitionPlayer.BeginFrame"/>,
     /// <see cref="Plan"/> turns the transition's pose back into the stream's space and gives the velocity
     /// (<see cref="TransitionVelocity"/>) that the animation job blends with the controller's
@@ -104,11 +104,20 @@ namespace DeltaInterpolator.Core.Playback
         }
 
         /// <summary>A pose given relative to where the character stands now (stream space) into motion space, in place.</summary>
-        public void TargetToMotionSpace(Span<double> rootPosition, Span<double> rootRotation)
+        public void TargetToMotionSpace(Span<double> rootPosition, Span<double> rootRotation) => ToMotionSpace(_toWorld, rootPosition, rootRotation);
+
+        /// <summary>
+        /// A pose given relative to where the character stood at <paramref name="character"/> (an earlier frame
+        /// of this motion space, e.g. when a deferred request was made; stream space) into motion space, in place.
+        /// </summary>
+        public void TargetToMotionSpace(RootFrame character, Span<double> rootPosition, Span<double> rootRotation) =>
+            ToMotionSpace(Enabled ? character.Then(Armature) : Armature, rootPosition, rootRotation);
+
+        private void ToMotionSpace(RootFrame toWorld, Span<double> rootPosition, Span<double> rootRotation)
         {
-            Vector3D world = _toWorld.PointToParent(Vector3D.Read(rootPosition, 0));
+            Vector3D world = toWorld.PointToParent(Vector3D.Read(rootPosition, 0));
             _anchorToWorld.PointFromParent(world).Write(rootPosition, 0);
-            QuaternionD q = _toWorld.RotationToParent(QuaternionD.Read(rootRotation, 0));
+            QuaternionD q = toWorld.RotationToParent(QuaternionD.Read(rootRotation, 0));
             _anchorToWorld.RotationFromParent(q).Write(rootRotation, 0);
         }
 

@@ -68,6 +68,9 @@ namespace DeltaInterpolator.Core.Playback
         private int _neededBefore;
         private TransitionCompletion? _pendingCompletion;
         private TransitionCompletion? _pendingInterruption;
+        private TransitionCompletion? _pendingDropped;
+        private int _deferredId;
+        private double _deferredArrival;
 
         /// <summary>Creates a player for one character.</summary>
         /// <param name="map">Character bones ↔ model joints; its joint count must be the model's.</param>
@@ -193,18 +196,80 @@ namespace DeltaInterpolator.Core.Playback
         /// <exception cref="ArgumentOutOfRangeException">The duration is not positive or longer than the model can span.</exception>
         public int RequestTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double durationSeconds)
         {
-            if (!(durationSeconds > 0) || double.IsInfinity(durationSeconds)) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, "expected a positive number of seconds");
             if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
+            int missing = CheckRequestable(durationSeconds);
+            // A newer request replaces one still waiting for its target pose.
+            DropDeferred();
+            return Start(targetRoot, targetRotations, durationSeconds, missing, ++_nextId);
+        }
+
+        /// <summary>
+        /// Asks for a transition whose target pose is not known yet: the animation system samples it (Unity: a
+        /// clip through the playable graph, at its next evaluation) and <see cref="CompleteDeferredTransition"/>
+        /// hands it over. The transition arrives when it would have if the pose had been given now
+        /// (<paramref name="durationSeconds"/> from the newest recorded frame); until the pose comes, the current
+        /// transition (if any) plays on. A newer request, deferred or not, and <see cref="Cancel"/> end it
+        /// (reported with ReachedTarget false).
+        /// </summary>
+        /// <returns>The request's id, as reported by <see cref="TransitionCompleted"/>.</returns>
+        /// <exception cref="InvalidOperationException">No frame was recorded yet.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">The duration is not positive or longer than the model can span.</exception>
+        public int DeferTransition(double durationSeconds)
+        {
+            CheckRequestable(durationSeconds);
+            DropDeferred();
+            _deferredId = ++_nextId;
+            _deferredArrival = History.NewestTime + durationSeconds;
+            FlushEvents();
+            return _deferredId;
+        }
+
+        /// <summary>True while a <see cref="DeferTransition"/> request waits for its target pose.</summary>
+        public bool HasDeferredTransition => _deferredId != 0;
+
+        /// <summary>
+        /// Starts the waiting <see cref="DeferTransition"/> request with its target pose (same spaces as
+        /// <see cref="RequestTransition"/>): it arrives at the time asked for when it was deferred, or one
+        /// model frame after the newest recorded frame when the pose came later than that.
+        /// </summary>
+        /// <returns>The deferred request's id.</returns>
+        /// <exception cref="InvalidOperationException">No request is waiting.</exception>
+        public int CompleteDeferredTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations)
+        {
+            if (_deferredId == 0) throw new InvalidOperationException("no deferred transition is waiting for its target pose");
+            if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
+            int id = _deferredId;
+            _deferredId = 0;
+            double duration = Math.Max(_deferredArrival - History.NewestTime, 1.0 / FrameRate);
+            return Start(targetRoot, targetRotations, duration, MissingFramesFor(duration), id);
+        }
+
+        // The duration's missing frames, after the checks every request passes.
+        private int CheckRequestable(double durationSeconds)
+        {
+            if (!(durationSeconds > 0) || double.IsInfinity(durationSeconds)) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, "expected a positive number of seconds");
             if (History.Count == 0) throw new InvalidOperationException("no frame has been recorded yet: play at least one frame before requesting a transition");
             int missing = MissingFramesFor(durationSeconds);
-            int gap = missing + 1;
             ModelContract c = _decoder.Contract;
             if (PastFrames + missing > c.MaxFrameIndex)
             {
                 double longest = (c.MaxFrameIndex - PastFrames + 1) / FrameRate;
-                throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, $"{durationSeconds:0.###} s is {gap} model frames; this model spans at most {longest:0.###} s after {PastFrames} past frames");
+                throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, $"{durationSeconds:0.###} s is {missing + 1} model frames; this model spans at most {longest:0.###} s after {PastFrames} past frames");
             }
 
+            return missing;
+        }
+
+        private void DropDeferred()
+        {
+            if (_deferredId == 0) return;
+            _pendingDropped = new TransitionCompletion(_deferredId, false, History.Count == 0 ? 0 : History.NewestTime);
+            _deferredId = 0;
+        }
+
+        private int Start(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double durationSeconds, int missing, int id)
+        {
+            int gap = missing + 1;
             bool wasPlaying = _playing;
             Interrupt(History.NewestTime);
             TransitionJob job = JobFor(PastFrames, missing);
@@ -244,7 +309,7 @@ namespace DeltaInterpolator.Core.Playback
             _ease.Begin(t);
             _neededBefore = 0;
             _job = job;
-            _requestId = ++_nextId;
+            _requestId = id;
             _playing = true;
             _reached = false;
             _start = t0;
@@ -258,9 +323,10 @@ namespace DeltaInterpolator.Core.Playback
             return _requestId;
         }
 
-        /// <summary>Stops the current transition at once (weight 0); it completes with ReachedTarget false.</summary>
+        /// <summary>Stops the current transition at once (weight 0); it, and a request still waiting for its target pose, complete with ReachedTarget false.</summary>
         public void Cancel()
         {
+            DropDeferred();
             Interrupt(History.Count == 0 ? 0 : History.NewestTime);
             _weight = 0;
             FlushEvents();
@@ -394,6 +460,12 @@ namespace DeltaInterpolator.Core.Playback
             {
                 _pendingInterruption = null;
                 TransitionCompleted?.Invoke(interrupted);
+            }
+
+            if (_pendingDropped is TransitionCompletion dropped)
+            {
+                _pendingDropped = null;
+                TransitionCompleted?.Invoke(dropped);
             }
 
             if (_pendingCompletion is TransitionCompletion completed)

@@ -25,18 +25,21 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private const double Distance = 2.0;       // metres, in the world
         private const double Duration = 1.0;       // seconds
 
-        [TestCase(true, 2.0, 1.0, 60.0, 0.0)]
-        [TestCase(true, 1.5, 1.0, 60.0, 0.0)]
-        [TestCase(true, 2.0, 1.7, 144.0, 0.25)]
-        [TestCase(true, 1.5, 0.6, 144.0, 0.25)]
-        [TestCase(false, 2.0, 1.0, 60.0, 0.0)]
-        [TestCase(false, 2.0, 1.7, 144.0, 0.25)]
-        public void WalksToATarget2MetresAheadArrivesOnItsFrameNeverBackwardNoJumpAtBlendOut(bool applyRootMotion, double speed, double characterScale, double fps, double jitter)
+        [TestCase(true, 2.0, 1.0, 60.0, 0.0, false)]
+        [TestCase(true, 1.5, 1.0, 60.0, 0.0, false)]
+        [TestCase(true, 2.0, 1.7, 144.0, 0.25, false)]
+        [TestCase(true, 1.5, 0.6, 144.0, 0.25, false)]
+        [TestCase(false, 2.0, 1.0, 60.0, 0.0, false)]
+        [TestCase(false, 2.0, 1.7, 144.0, 0.25, false)]
+        [TestCase(true, 2.0, 1.7, 144.0, 0.25, true)]
+        [TestCase(false, 2.0, 1.7, 144.0, 0.25, true)]
+        [TestCase(true, 1.5, 1.0, 30.0, 0.0, true)]
+        public void WalksToATarget2MetresAheadArrivesOnItsFrameNeverBackwardNoJumpAtBlendOut(bool applyRootMotion, double speed, double characterScale, double fps, double jitter, bool sampledByTheGraph)
         {
             using var loop = new Loop(applyRootMotion, speed, characterScale, fps, jitter, slerpOnly: true);
             loop.PlayUntil(1.2);
             Vector3D start = loop.HipsWorld;
-            Vector3D target = loop.RequestAhead(Distance, Duration);
+            Vector3D target = loop.RequestAhead(Distance, Duration, sampledByTheGraph);
             Assert.That(Horizontal(target - start).Length, Is.EqualTo(Distance).Within(0.05), "the target stands 2 m ahead of the hips");
             double targetTime = loop.Time + Duration;
 
@@ -72,6 +75,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     Assert.That(loop.Time, Is.GreaterThanOrEqualTo(targetTime - 1e-9), "arrived early");
                     Assert.That(loop.Time - loop.LastStep, Is.LessThan(targetTime - 1e-9), "the first frame at or after the target time shows it");
                     Assert.That(loop.Completions[0].ReachedTarget, Is.True);
+                    Assert.That(loop.Completions[0].RequestId, Is.EqualTo(loop.RequestId));
                     // On the target: at the target time exactly; a frame that comes later shows it moved on at the arrival speed.
                     double late = loop.Time - targetTime;
                     double miss = Horizontal(loop.HipsWorld - target).Length;
@@ -138,6 +142,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double _hipsHeight;
             private ArrayPoseStream _stream;
             private double _nextStep;
+            private RootFrame _deferredFrame;
+            private double[] _deferredRoot = new double[3];
+            private double[] _deferredRotations = new double[0];
+            private bool _sampled;
 
             public Loop(bool applyRootMotion, double speed, double characterScale, double fps, double jitter, bool slerpOnly)
             {
@@ -191,7 +199,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             /// Requests the controller's pose a little later, its hips <paramref name="metres"/> ahead of the
             /// hips shown (in the world), sampled in the space the controller's root motion uses.
             /// </summary>
-            public Vector3D RequestAhead(double metres, double seconds)
+            /// <remarks>
+            /// <paramref name="sampledByTheGraph"/>: as the component requests a clip's pose. The request is deferred
+            /// (<see cref="TransitionPlayer.DeferTransition"/>) with where the character stands now; the next
+            /// evaluation samples the clip through the playable graph (the job reads its input stream), and the
+            /// Update after it completes the request in the root-motion space of the request's frame.
+            /// </remarks>
+            public Vector3D RequestAhead(double metres, double seconds, bool sampledByTheGraph = false)
             {
                 var root = new double[3];
                 var rotations = new double[4 * _humanoid.BoneCount];
@@ -202,10 +216,23 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Vector3D world = Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(root, 0));
                 // As the component does: the target into the root-motion space, where the character stands now.
                 _rootMotion.BeginFrame(Character);
+                if (sampledByTheGraph)
+                {
+                    RequestId = Player.DeferTransition(seconds);
+                    _deferredFrame = Character;
+                    _deferredRoot = root;
+                    _deferredRotations = rotations;
+                    _sampled = false;
+                    return world;
+                }
+
                 _rootMotion.TargetToMotionSpace(root, rotations);
-                Player.RequestTransition(root, rotations, seconds);
+                RequestId = Player.RequestTransition(root, rotations, seconds);
                 return world;
             }
+
+            /// <summary>The id of the last request.</summary>
+            public int RequestId { get; private set; }
 
             public void Step()
             {
@@ -215,14 +242,23 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _nextStep = Draw();
                 Vector3D controllerVelocity = _rootMotionOn ? Quaternions.Apply(Character.Rotation, (_speed) * Vector3D.UnitZ) : Vector3D.Zero;
 
-                // MotionInbetweener.Update: the frame's transition pose, and the root motion plan.
+                // MotionInbetweener.Update: a clip target the last evaluation sampled starts its transition; then
+                // the frame's transition pose, and the root motion plan.
                 _rootMotion.BeginFrame(Character);
+                if (Player.HasDeferredTransition && _sampled)
+                {
+                    _rootMotion.TargetToMotionSpace(_deferredFrame, _deferredRoot, _deferredRotations);
+                    Player.CompleteDeferredTransition(_deferredRoot, _deferredRotations);
+                }
+
                 Player.BeginFrame(Time);
                 Player.PoseRoot.CopyTo(_poseRoot);
                 Player.PoseRotations.CopyTo(_poseRotations);
                 _rootMotion.Plan(Player, Time, dt, controllerVelocity, _poseRoot, _poseRotations.AsSpan(0, 4));
 
-                // The Animator Controller's output, then TransitionLayerJob: root motion, then the pose.
+                // The Animator Controller's output, then TransitionLayerJob: root motion, then the pose (and the
+                // target reader's job reads a requested clip's pose from its input stream).
+                if (Player.HasDeferredTransition) _sampled = true;
                 Controller(Time, _stream.Root, _stream.Rotations);
                 Vector3D velocity = RootMotion.BlendVelocity(Player.Weight, _rootMotion.TransitionVelocity, controllerVelocity);
                 PoseBlend.Apply(ref _stream, Player.Weight, _poseRoot, _poseRotations, _shownRoot, _shownRotations);

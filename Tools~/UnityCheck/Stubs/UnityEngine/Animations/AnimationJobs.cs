@@ -23,6 +23,12 @@ namespace UnityEngine.Animations
         public Vector3 velocity { get => throw null!; set => throw null!; }
 
         public Vector3 angularVelocity { get => throw null!; set => throw null!; }
+
+        public bool isValid => throw null!;
+
+        public int inputStreamCount => throw null!;
+
+        public AnimationStream GetInputStream(int index) => throw null!;
     }
 
     // source: unity:Modules/Animation/ScriptBindings/AnimationStreamHandles.bindings.cs
@@ -48,6 +54,18 @@ namespace UnityEngine.Animations
     {
         public static AnimationScriptPlayable Create<T>(PlayableGraph graph, T jobData, int inputCount = 0)
             where T : struct, IAnimationJob => throw null!;
+
+        public void SetProcessInputs(bool value) => throw null!;
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationClipPlayable.bindings.cs
+    public partial struct AnimationClipPlayable : IPlayable
+    {
+        public static AnimationClipPlayable Create(PlayableGraph graph, AnimationClip clip) => throw null!;
+
+        public void SetApplyFootIK(bool value) => throw null!;
+
+        public void SetApplyPlayableIK(bool value) => throw null!;
     }
 
     // source: unity:Modules/Animation/ScriptBindings/AnimationPlayableOutput.bindings.cs

@@ -28,6 +28,23 @@ namespace UnityEngine.Playables
         public void Play() => throw null!;
 
         public void SetTimeUpdateMode(DirectorUpdateMode value) => throw null!;
+
+        public bool Connect<U, V>(U source, int sourceOutputPort, V destination, int destinationInputPort)
+            where U : struct, IPlayable
+            where V : struct, IPlayable => throw null!;
+
+        public void DestroyPlayable<U>(U playable)
+            where U : struct, IPlayable => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableExtensions.cs
+    public static partial class PlayableExtensions
+    {
+        public static void Pause<U>(this U playable)
+            where U : struct, IPlayable => throw null!;
+
+        public static void SetTime<U>(this U playable, double value)
+            where U : struct, IPlayable => throw null!;
     }
 
     // source: unity:Runtime/Export/Director/PlayableOutputExtensions.cs

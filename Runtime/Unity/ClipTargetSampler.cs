@@ -1,0 +1,84 @@
+using System;
+using Unity.Collections;
+using UnityEngine;
+using UnityEngine.Animations;
+using UnityEngine.Experimental.Animations;
+using UnityEngine.Playables;
+
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>
+    /// Samples a clip's pose for a transition target through the component's playable graph, never by
+    /// writing to the scene: an <c>AnimationClipPlayable</c> held at the requested time feeds a
+    /// <see cref="ClipTargetReadJob"/> on its own pass-through output, which reads the pose in the next
+    /// animation evaluation. The component defers the request (Core's <c>TransitionPlayer.DeferTransition</c>)
+    /// and completes it when <see cref="TryRead"/> has the pose, with the arrival time asked for.
+    /// </summary>
+    /// <remarks>
+    /// The output sorts just before the component's transition layer and passes the controller's pose on
+    /// unchanged (the job writes nothing); the clip is evaluated only in frames that sample a target. Foot
+    /// IK and playable IK are off, so the pose is the clip's own, as <c>AnimationClip.SampleAnimation</c> gives it.
+    /// The graph owns the playables (destroying it destroys them); <see cref="Dispose"/> frees the buffers.
+    /// </remarks>
+    internal sealed class ClipTargetSampler : IDisposable
+    {
+        private readonly PlayableGraph _graph;
+        private readonly AnimationScriptPlayable _reader;
+        private NativeArray<double> _target;
+        private NativeArray<int> _requests;
+        private AnimationClipPlayable _clipPlayable;
+        private AnimationClip? _clip;
+        private int _request;
+
+        public ClipTargetSampler(PlayableGraph graph, Animator animator, NativeArray<TransformStreamHandle> bones, int rootBone, ushort sortingOrder)
+        {
+            _graph = graph;
+            _target = new NativeArray<double>(3 + 4 * bones.Length, Allocator.Persistent);
+            _requests = new NativeArray<int>(2, Allocator.Persistent);
+            var job = new ClipTargetReadJob { Bones = bones, Target = _target, Requests = _requests, RootBone = rootBone };
+            _reader = AnimationScriptPlayable.Create(graph, job, 1);
+            _reader.SetProcessInputs(false);
+            AnimationPlayableOutput output = AnimationPlayableOutput.Create(graph, "Δ-Interpolator target", animator);
+            output.SetSourcePlayable(_reader);
+            output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
+            output.SetSortingOrder(sortingOrder);
+        }
+
+        /// <summary>Asks for the pose <paramref name="clip"/> shows at <paramref name="time"/>; it is read in the next animation evaluation.</summary>
+        public void Sample(AnimationClip clip, float time)
+        {
+            if (clip != _clip)
+            {
+                if (_clip != null) _graph.DestroyPlayable(_clipPlayable);
+                _clipPlayable = AnimationClipPlayable.Create(_graph, clip);
+                _clipPlayable.SetApplyFootIK(false);
+                _clipPlayable.SetApplyPlayableIK(false);
+                // Held at the requested time: the graph's clock must not move it before it is read.
+                _clipPlayable.Pause();
+                _graph.Connect(_clipPlayable, 0, _reader, 0);
+                _clip = clip;
+            }
+
+            _clipPlayable.SetTime(time);
+            // A newer request supersedes one not read yet: only the latest counts as read.
+            _requests[0] = ++_request;
+        }
+
+        /// <summary>Copies the pose of the latest <see cref="Sample"/> once the animation evaluation has read it.</summary>
+        /// <returns>False while it has not been read (e.g. the Animator was culled and did not evaluate).</returns>
+        public bool TryRead(double[] root, double[] rotations)
+        {
+            if (_request == 0 || _requests[1] != _request) return false;
+            ReadOnlySpan<double> t = _target.AsReadOnlySpan();
+            t.Slice(0, 3).CopyTo(root);
+            t.Slice(3).CopyTo(rotations);
+            return true;
+        }
+
+        public void Dispose()
+        {
+            if (_target.IsCreated) _target.Dispose();
+            if (_requests.IsCreated) _requests.Dispose();
+        }
+    }
+}
