@@ -4,12 +4,12 @@ namespace DeltaInterpolator.Core.Baking
     public readonly struct BakeGap
     {
         /// <summary>Creates a gap description.</summary>
-        public BakeGap(int startKey, int endKey, int pastAvailable, int pastKeys)
+        public BakeGap(int startKey, int endKey, int pastAvailable, int pastFrames)
         {
             StartKey = startKey;
             EndKey = endKey;
             PastAvailable = pastAvailable;
-            PastKeys = pastKeys;
+            PastFrames = pastFrames;
         }
 
         /// <summary>Frame index of the key before the gap (the last past key).</summary>
@@ -19,12 +19,15 @@ namespace DeltaInterpolator.Core.Baking
         public int EndKey { get; }
 
         /// <summary>Missing frames n = EndKey − StartKey − 1.</summary>
-        public int Missing => EndKey - StartKey - 1;
+        public int MissingFrames => EndKey - StartKey - 1;
+
+        /// <summary>The gap G = n + 1 (model frames from the last past key to the target).</summary>
+        public int Gap => EndKey - StartKey;
 
         /// <summary>Frames up to and including <see cref="StartKey"/> that are given as context (keys or frames already filled).</summary>
         public int PastAvailable { get; }
 
-        /// <summary>Past keys of the request: <see cref="PastAvailable"/>, or more when the earliest is repeated.</summary>
-        public int PastKeys { get; }
+        /// <summary>Past frames P of the request: <see cref="PastAvailable"/>, or more when the earliest is repeated.</summary>
+        public int PastFrames { get; }
     }
 }

@@ -41,7 +41,7 @@ namespace DeltaInterpolator.Core.Baking
             get
             {
                 int total = 0;
-                foreach (BakeGap g in GapArray) total += g.Missing;
+                foreach (BakeGap g in GapArray) total += g.MissingFrames;
                 return total;
             }
         }

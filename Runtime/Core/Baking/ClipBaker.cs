@@ -109,15 +109,15 @@ namespace DeltaInterpolator.Core.Baking
                 }
 
                 int available = Math.Min(Settings.FilledFramesAsContext ? start - first + 1 : KeyRun(sorted, i), Settings.PastFrames);
-                int pastKeys = PastContext.KeyCount(available, Settings.PastFrames, Settings.ShortContext);
-                if (pastKeys > fit)
+                int pastFrames = PastContext.KeyCount(available, Settings.PastFrames, Settings.ShortContext);
+                if (pastFrames > fit)
                 {
-                    pastKeys = fit;
+                    pastFrames = fit;
                     available = Math.Min(available, fit);
-                    capped.Add(new BakeGap(start, end, available, pastKeys));
+                    capped.Add(new BakeGap(start, end, available, pastFrames));
                 }
 
-                var gap = new BakeGap(start, end, available, pastKeys);
+                var gap = new BakeGap(start, end, available, pastFrames);
                 gaps.Add(gap);
                 if (Settings.TrainedMissingFrames is { } m)
                 {
@@ -125,7 +125,7 @@ namespace DeltaInterpolator.Core.Baking
                     else if (n < m.Min) shortGaps.Add(gap);
                 }
 
-                if (Settings.TrainedPastFrames is { } p && (pastKeys < p.Min || pastKeys > p.Max)) pastOutside.Add(gap);
+                if (Settings.TrainedPastFrames is { } p && (pastFrames < p.Min || pastFrames > p.Max)) pastOutside.Add(gap);
             }
 
             var warnings = new List<string>();
@@ -220,9 +220,9 @@ namespace DeltaInterpolator.Core.Baking
             progress?.Report(0);
             foreach (BakeGap gap in plan.GapArray)
             {
-                int n = gap.Missing;
+                int n = gap.MissingFrames;
                 int start = gap.StartKey - first;
-                Transition t = TransitionFor(skeleton, gap.PastKeys, n);
+                Transition t = TransitionFor(skeleton, gap.PastFrames, n);
                 PastContext.FillPast(t, root, rotations, start, gap.PastAvailable);
                 PastContext.FillTarget(t, root, rotations, gap.EndKey - first);
                 Inbetweener.Inbetween(t);
@@ -297,7 +297,7 @@ namespace DeltaInterpolator.Core.Baking
             var sb = new StringBuilder();
             sb.Append(gaps.Count == 1 ? "1 gap is" : gaps.Count.ToString(CultureInfo.InvariantCulture) + " gaps are");
             sb.Append(" (");
-            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey}: {g.Missing} missing");
+            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey}: {g.MissingFrames} missing");
             sb.Append(')');
             return sb.ToString();
         }
@@ -307,7 +307,7 @@ namespace DeltaInterpolator.Core.Baking
             var sb = new StringBuilder();
             sb.Append(gaps.Count == 1 ? "1 gap is fed " : gaps.Count.ToString(CultureInfo.InvariantCulture) + " gaps are fed ");
             sb.Append("a number of past keys (");
-            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey}: {g.PastKeys}");
+            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey}: {g.PastFrames}");
             sb.Append(')');
             return sb.ToString();
         }

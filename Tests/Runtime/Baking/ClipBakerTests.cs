@@ -152,7 +152,7 @@ namespace DeltaInterpolator.Tests.Baking
             // 1 past key + 19 missing → the target at index 20: the most the graph takes; 20 missing is refused.
             Assert.That(() => baker.Plan(30, new[] { 0, 21 }), Throws.TypeOf<KeyLayoutException>().With.Message.Contains("keys 0 and 21 has 20 missing frames"));
             BakePlan fits = baker.Plan(30, new[] { 0, 20 });
-            Assert.That(fits.Gaps[0].PastKeys, Is.EqualTo(1));
+            Assert.That(fits.Gaps[0].PastFrames, Is.EqualTo(1));
         }
 
         [Test]
@@ -169,10 +169,10 @@ namespace DeltaInterpolator.Tests.Baking
             };
             var baker = new ClipBaker(new SlerpBaseline(), settings);
             BakePlan plan = baker.Plan(100, new[] { 0, 20, 22, 57, 90 });
-            Assert.That(plan.Gaps[2].Missing, Is.EqualTo(34));
-            Assert.That(plan.Gaps[2].PastKeys, Is.EqualTo(6), "40 − 34: fewer past keys so that the target index stays ≤ 40");
-            Assert.That(plan.Gaps[3].PastKeys, Is.EqualTo(8), "40 − 32");
-            Assert.That(plan.Gaps[0].PastKeys, Is.EqualTo(10), "the first gap repeats the first key to 10");
+            Assert.That(plan.Gaps[2].MissingFrames, Is.EqualTo(34));
+            Assert.That(plan.Gaps[2].PastFrames, Is.EqualTo(6), "40 − 34: fewer past keys so that the target index stays ≤ 40");
+            Assert.That(plan.Gaps[3].PastFrames, Is.EqualTo(8), "40 − 32");
+            Assert.That(plan.Gaps[0].PastFrames, Is.EqualTo(10), "the first gap repeats the first key to 10");
             Assert.That(plan.Warnings, Has.Some.Contains("keys 22–57: 34 missing").And.Contains("longer than the 30"));
             Assert.That(plan.Warnings, Has.Some.Contains("keys 20–22: 1 missing").And.Contains("shorter than the 5"));
             Assert.That(plan.Warnings, Has.Some.Contains("fed with fewer past keys"));
