@@ -107,27 +107,7 @@ namespace DeltaInterpolator.OnnxRuntime
         public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
         {
             if (_disposed) throw new ObjectDisposedException(nameof(OnnxRuntimeBackend));
-            var binding = new Binding(this);
-            try
-            {
-                foreach (InferenceTensor t in inputs)
-                {
-                    Description.RequireInput(t);
-                    binding.Io.BindInput(t.Name, binding.Wrap(t));
-                }
-
-                foreach (InferenceTensor t in outputs)
-                {
-                    Description.RequireOutput(t);
-                    binding.Io.BindOutput(t.Name, binding.Wrap(t));
-                }
-            }
-            catch
-            {
-                binding.Dispose();
-                throw;
-            }
-
+            Binding binding = BindingTargets.Fill(new Binding(this), Description, inputs, outputs);
             _bindings.Add(binding);
             return binding;
         }
@@ -181,7 +161,7 @@ namespace DeltaInterpolator.OnnxRuntime
             return nl < 0 ? s.Trim() : s.Substring(0, nl).Trim();
         }
 
-        private sealed class Binding : IInferenceBinding
+        private sealed class Binding : IInferenceBinding, IBindingTarget
         {
             private readonly OnnxRuntimeBackend _owner;
             private readonly List<OrtValue> _values = new List<OrtValue>();
@@ -195,7 +175,11 @@ namespace DeltaInterpolator.OnnxRuntime
 
             public OrtIoBinding Io { get; }
 
-            public OrtValue Wrap(InferenceTensor t)
+            public void BindInput(InferenceTensor t) => Io.BindInput(t.Name, Wrap(t));
+
+            public void BindOutput(InferenceTensor t) => Io.BindOutput(t.Name, Wrap(t));
+
+            private OrtValue Wrap(InferenceTensor t)
             {
                 // Pins the managed array for the binding's lifetime: ONNX Runtime reads inputs from and
                 // writes outputs into Core's own arrays (a batch of fewer rows binds the first Length

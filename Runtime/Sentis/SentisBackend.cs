@@ -84,27 +84,7 @@ namespace DeltaInterpolator.Sentis
         public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
         {
             if (_disposed) throw new ObjectDisposedException(nameof(SentisBackend));
-            var binding = new Binding(this);
-            try
-            {
-                foreach (InferenceTensor t in inputs)
-                {
-                    Description.RequireInput(t);
-                    binding.AddInput(t);
-                }
-
-                foreach (InferenceTensor t in outputs)
-                {
-                    Description.RequireOutput(t);
-                    binding.AddOutput(t);
-                }
-            }
-            catch
-            {
-                binding.Dispose();
-                throw;
-            }
-
+            Binding binding = BindingTargets.Fill(new Binding(this), Description, inputs, outputs);
             _bindings.Add(binding);
             return binding;
         }
@@ -165,7 +145,7 @@ namespace DeltaInterpolator.Sentis
             return new TensorShape(dims);
         }
 
-        private sealed class Binding : IAsyncInferenceBinding
+        private sealed class Binding : IAsyncInferenceBinding, IBindingTarget
         {
             private readonly SentisBackend _owner;
             private readonly List<(InferenceTensor Core, Tensor<float>? Floats, Tensor<int>? Ints, int[]? Scratch, float[]? Staging)> _inputs = new List<(InferenceTensor, Tensor<float>?, Tensor<int>?, int[]?, float[]?)>();
@@ -179,7 +159,7 @@ namespace DeltaInterpolator.Sentis
                 _owner = owner;
             }
 
-            public void AddInput(InferenceTensor t)
+            public void BindInput(InferenceTensor t)
             {
                 TensorShape shape = Shape(t);
                 if (t.Kind == TensorElementKind.Float32)
@@ -193,7 +173,7 @@ namespace DeltaInterpolator.Sentis
                 }
             }
 
-            public void AddOutput(InferenceTensor t) => _outputs.Add(t);
+            public void BindOutput(InferenceTensor t) => _outputs.Add(t);
 
             // Shown in the Profiler's CPU timeline on whichever thread decodes (main or worker): a blocking run,
             // and the scheduling of an asynchronous one (its readback completes in TryComplete).
