@@ -5,6 +5,7 @@ using System.Globalization;
 using System.Linq;
 using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Clips;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
@@ -42,6 +43,7 @@ namespace DeltaInterpolator.Editor.Baking
         [SerializeField] private InbetweenerSettings? _settings;
         [SerializeField] private InbetweeningModel? _model;
         [SerializeField] private bool _alsoSlerp;
+        [SerializeField] private bool _lockFeet = true;
         [SerializeField] private KeySource _source = KeySource.ClipKeyframes;
         [SerializeField] private AnimationClip? _keyClip;
         [SerializeField] private AnimationClip? _fromClip;
@@ -95,6 +97,8 @@ namespace DeltaInterpolator.Editor.Baking
 
             _pastFrames = EditorGUILayout.IntField("Past keys (frames)", _pastFrames);
             _alsoSlerp = EditorGUILayout.Toggle("Also bake SLERP", _alsoSlerp);
+            // As `bake --feet lock` (the CLI's default): planted feet held still on the filled frames, keys untouched.
+            _lockFeet = EditorGUILayout.Toggle("Lock planted feet", _lockFeet);
             string? problem = Problem();
             if (problem != null) EditorGUILayout.HelpBox(problem, MessageType.Warning);
             if (GUILayout.Button("Bake…") && problem == null)
@@ -231,10 +235,10 @@ namespace DeltaInterpolator.Editor.Baking
                         name = _fromClip!.name + " to " + _toClip!.name;
                     }
 
-                    BakeMethod model = BakeMethod.Model(inbetweener);
+                    BakeMethod model = BakeMethod.Model(inbetweener, feet: _lockFeet ? new FootLockSettings() : null);
                     model.Settings.PastFrames = _pastFrames;
                     var methods = new List<BakeMethod> { model };
-                    if (_alsoSlerp) methods.Add(BakeMethod.Slerp());
+                    if (_alsoSlerp) methods.Add(BakeMethod.Slerp(_lockFeet));
                     BakeRun run = CharacterBake.Run(contract, track, jointMap, methods, progress);
                     var warnings = run.Methods[0].Plan.Warnings;
                     if (warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the keys", string.Join("\n", warnings), "Save anyway", "Cancel"))

@@ -2,12 +2,14 @@ using System;
 using System.IO;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Clips;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Core.Workflows;
+using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.OnnxRuntime;
 using NUnit.Framework;
 
@@ -25,16 +27,32 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     {
         private const double Metres = 0.01;
 
-        [Test]
-        public void TheEditorPathOnAnotherRigBakesWhatTheCliBakes()
+        /// <param name="lockFeet">Both paths with foot locking (the window's "Lock planted feet", `bake --feet lock`).</param>
+        [TestCase(false)]
+        [TestCase(true)]
+        public void TheEditorPathOnAnotherRigBakesWhatTheCliBakes(bool lockFeet)
         {
             MotionClip original = TwoRigBakeTests.DemoWalk(); // the T-pose and 4 s of walking
             using Inbetweener model = TwoRigBakeTests.ShippedModel();
+            FootLockSettings? feet = lockFeet ? new FootLockSettings() : null;
+            BakeMethod[] Methods() => new[] { BakeMethod.Model(model, feet: feet), BakeMethod.Slerp(lockFeet) };
 
             // The CLI: `bake --reference-frame 0` on the BVH.
             IRigRetargeting cli = RigRetargeting.For(model.Contract, original, "cmu.bvh", referenceFrame: 0);
             int[] keys = BakeKeys.Every(60, original, 1, model.Contract);
-            BakeRun expected = InbetweenBake.Run(original, keys, cli, new[] { BakeMethod.Model(model), BakeMethod.Slerp() });
+            BakeRun expected = InbetweenBake.Run(original, keys, cli, Methods());
+            if (lockFeet)
+            {
+                // Locking acts on this walk (4 s, keys every 15 model frames): less foot skating than the same bake without it.
+                BakeRun unlocked = InbetweenBake.Run(original, keys, cli, new[] { BakeMethod.Model(model), BakeMethod.Slerp() });
+                foreach (string method in new[] { "Model", "SLERP" })
+                {
+                    double with = BakeScores.Measure(original, expected)[method].Skating.MeanSpeed;
+                    double without = BakeScores.Measure(original, unlocked)[method].Skating.MeanSpeed;
+                    TestContext.WriteLine($"{method}: foot skating {with:F3} leg lengths/s locked, {without:F3} not");
+                    Assert.That(with, Is.LessThan(without), method);
+                }
+            }
 
             // The editor: the same motion on another rig, its key poses read off the transforms.
             (MotionClip rebuilt, string json) = TwoRigBakeTests.Rebuild(original, ((MappedRig)cli).Map);
@@ -51,7 +69,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
 
             var progress = new Counter();
-            BakeRun actual = CharacterBake.Run(model.Contract, track, JointMap.FromJson(json, "rig-b-map.json"), new[] { BakeMethod.Model(model), BakeMethod.Slerp() }, progress,
+            BakeRun actual = CharacterBake.Run(model.Contract, track, JointMap.FromJson(json, "rig-b-map.json"), Methods(), progress,
                 maxBoneDeviationDegrees: 30); // CMU's T-pose frame holds the right shoulder 26° from the model's
             Assert.That(progress.Last.GapsDone, Is.EqualTo(progress.Last.GapsTotal), "progress reaches every gap of every method");
             Assert.That(progress.Last.GapsTotal, Is.EqualTo(2 * (keys.Length - 1)));
