@@ -103,6 +103,21 @@ namespace DeltaInterpolator.Core.Feet
             return new FootRig(skeleton, left, right, SkeletonMap.LegLength(ReferencePose.ModelTPose(skeleton), all, 0));
         }
 
+        /// <summary>True when <paramref name="skeleton"/> has the model's leg joints (LaFAN1 names), so <see cref="ForModel"/> succeeds.</summary>
+        public static bool HasModelLegs(Skeleton skeleton)
+        {
+            if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            foreach (string side in new[] { "Left", "Right" })
+            {
+                foreach (string joint in new[] { "UpLeg", "Leg", "Foot" })
+                {
+                    if (skeleton.IndexOf(side + joint) < 0) return false;
+                }
+            }
+
+            return true;
+        }
+
         /// <summary>
         /// The rig of a map's source skeleton (the user's rig): the source joints the model's leg joints follow,
         /// no toe where the map made the model's toe up, and the map's <see cref="SkeletonMap.SourceLegLength"/>.

@@ -83,37 +83,71 @@ namespace DeltaInterpolator.Evaluation.Baking
             double[] truthFeet = FootPositions(truth, first, frames, footJoints);
             double[] resultFeet = ReferenceEquals(truth, result) ? truthFeet : FootPositions(result, 0, frames, footJoints);
 
+            double ground = GroundLevel(truthFeet, n);
+            double leg = feet.LegLength;
+            double sum = 0;
+            int samples = 0;
+            int stride = n * 3;
+            for (int i = 0; i + 1 < keys.Count; i++)
+            {
+                int from = keys[i] - first, count = keys[i + 1] - keys[i] + 1;
+                Accumulate(new ReadOnlySpan<double>(truthFeet, from * stride, count * stride), new ReadOnlySpan<double>(resultFeet, from * stride, count * stride),
+                    n, truth.FrameTime, result.FrameTime, ground, leg, ref sum, ref samples);
+            }
+
+            return new FootSkating(samples, samples == 0 ? double.NaN : sum / samples, ground);
+        }
+
+        /// <summary>
+        /// Adds one gap's samples to <paramref name="sum"/> (speeds in leg lengths per second) and
+        /// <paramref name="samples"/>: the foot-joint positions (frames × <paramref name="footJoints"/> × 3) of the
+        /// key before the gap, its filled frames and the key after it, for the truth and the result. The filled
+        /// frames are scored; the keys give their neighbours. Allocation-free (the benchmark calls it per window).
+        /// </summary>
+        /// <param name="truthFeet">The truth's foot-joint positions over the gap and its two keys.</param>
+        /// <param name="resultFeet">The result's, same frames.</param>
+        /// <param name="footJoints">Foot joints per frame.</param>
+        /// <param name="truthFrameTime">Seconds per truth frame.</param>
+        /// <param name="resultFrameTime">Seconds per result frame.</param>
+        /// <param name="ground">The clip's ground level (<see cref="GroundLevel"/>).</param>
+        /// <param name="legLength">Leg length, in the positions' units.</param>
+        /// <param name="sum">Running sum of the result's speeds on planted truth samples (leg lengths per second).</param>
+        /// <param name="samples">Running count of those samples.</param>
+        public static void Accumulate(ReadOnlySpan<double> truthFeet, ReadOnlySpan<double> resultFeet, int footJoints, double truthFrameTime, double resultFrameTime,
+            double ground, double legLength, ref double sum, ref int samples)
+        {
+            int n = footJoints;
+            int frames = truthFeet.Length / (3 * n);
+            double heightLimit = ground + ContactHeight * legLength;
+            double speedLimit = ContactSpeed * legLength;
+            for (int f = 1; f + 1 < frames; f++)
+            {
+                for (int k = 0; k < n; k++)
+                {
+                    if (truthFeet[(f * n + k) * 3 + 1] > heightLimit) continue;
+                    if (HorizontalSpeed(truthFeet, f, k, n, 2 * truthFrameTime) >= speedLimit) continue;
+                    sum += HorizontalSpeed(resultFeet, f, k, n, 2 * resultFrameTime) / legLength;
+                    samples++;
+                }
+            }
+        }
+
+        /// <summary>
+        /// A clip's ground level: the <see cref="GroundPercentile"/>th percentile over its frames of the lowest
+        /// foot-joint height (<paramref name="feet"/>: frames × <paramref name="footJoints"/> × 3 positions).
+        /// </summary>
+        public static double GroundLevel(ReadOnlySpan<double> feet, int footJoints)
+        {
+            int frames = feet.Length / (3 * footJoints);
             var lowest = new double[frames];
             for (int f = 0; f < frames; f++)
             {
                 double low = double.PositiveInfinity;
-                for (int k = 0; k < n; k++) low = Math.Min(low, truthFeet[(f * n + k) * 3 + 1]);
+                for (int k = 0; k < footJoints; k++) low = Math.Min(low, feet[(f * footJoints + k) * 3 + 1]);
                 lowest[f] = low;
             }
 
-            double ground = Percentile(lowest, GroundPercentile);
-            double leg = feet.LegLength;
-            double heightLimit = ground + ContactHeight * leg;
-            double speedLimit = ContactSpeed * leg;
-            double dt2 = 2 * truth.FrameTime;
-            double sum = 0;
-            int samples = 0;
-            for (int i = 0; i + 1 < keys.Count; i++)
-            {
-                for (int frame = keys[i] + 1; frame < keys[i + 1]; frame++)
-                {
-                    int f = frame - first;
-                    for (int k = 0; k < n; k++)
-                    {
-                        if (truthFeet[(f * n + k) * 3 + 1] > heightLimit) continue;
-                        if (HorizontalSpeed(truthFeet, f, k, n, dt2) >= speedLimit) continue;
-                        sum += HorizontalSpeed(resultFeet, f, k, n, 2 * result.FrameTime);
-                        samples++;
-                    }
-                }
-            }
-
-            return new FootSkating(samples, samples == 0 ? double.NaN : sum / samples / leg, ground);
+            return Percentile(lowest, GroundPercentile);
         }
 
         /// <summary>The truth scored against itself over the same frames: the floor no method can beat.</summary>
@@ -133,7 +167,7 @@ namespace DeltaInterpolator.Evaluation.Baking
         }
 
         /// <summary>frames × foot joints × 3 global positions of <paramref name="clip"/>'s frames start.. (FK with its local translations).</summary>
-        private static double[] FootPositions(MotionClip clip, int start, int frames, IReadOnlyList<int> footJoints)
+        public static double[] FootPositions(MotionClip clip, int start, int frames, IReadOnlyList<int> footJoints)
         {
             int j = clip.Skeleton.JointCount, n = footJoints.Count;
             var globalPositions = new double[j * 3];
@@ -151,7 +185,7 @@ namespace DeltaInterpolator.Evaluation.Baking
         }
 
         /// <summary>|(p[f+1] − p[f−1]) in X, Z| / 2Δt for foot joint k (f has a frame on either side).</summary>
-        private static double HorizontalSpeed(double[] feet, int f, int k, int n, double twoFrameTimes)
+        private static double HorizontalSpeed(ReadOnlySpan<double> feet, int f, int k, int n, double twoFrameTimes)
         {
             int next = ((f + 1) * n + k) * 3, previous = ((f - 1) * n + k) * 3;
             double dx = feet[next] - feet[previous], dz = feet[next + 2] - feet[previous + 2];

@@ -8,6 +8,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
     public sealed class BenchmarkReport
     {
         private readonly MetricTotals[][] _totals;
+        private readonly MetricTotals[] _groundTruth;
 
         internal BenchmarkReport(
             int windowCount,
@@ -15,7 +16,8 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             string statisticsSource,
             IReadOnlyList<string> methodIds,
             IReadOnlyList<string> methodNames,
-            MetricTotals[][] totals)
+            MetricTotals[][] totals,
+            MetricTotals[] groundTruth)
         {
             WindowCount = windowCount;
             Window = options.Window;
@@ -28,6 +30,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             MethodIds = methodIds;
             MethodNames = methodNames;
             _totals = totals;
+            _groundTruth = groundTruth;
         }
 
         /// <summary>Number of test windows evaluated.</summary>
@@ -70,6 +73,17 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             for (int i = 0; i < Lengths.Count; i++) if (Lengths[i] == length) l = i;
             if (m < 0 || l < 0) throw new KeyNotFoundException($"no result for method '{methodId}' at length {length}");
             return _totals[m][l];
+        }
+
+        /// <summary>
+        /// The ground truth scored as a method at <paramref name="length"/>: only its foot skating is set (the
+        /// floor no method can beat: motion capture's planted feet creep a little).
+        /// </summary>
+        /// <exception cref="KeyNotFoundException">No such length in this report.</exception>
+        public MetricTotals GroundTruth(int length)
+        {
+            for (int i = 0; i < Lengths.Count; i++) if (Lengths[i] == length) return _groundTruth[i];
+            throw new KeyNotFoundException($"no result at length {length}");
         }
     }
 }

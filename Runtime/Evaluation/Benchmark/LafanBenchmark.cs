@@ -2,8 +2,10 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.Evaluation.Metrics;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
@@ -95,6 +97,19 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                 maxMissing = Math.Max(maxMissing, lengths[l]);
             }
 
+            var truthTotals = new MetricTotals[lengths.Count];
+            for (int l = 0; l < lengths.Count; l++) truthTotals[l] = new MetricTotals();
+
+            // Foot skating (an extra table): the skeleton's feet, and foot-joint positions of the last past key, the
+            // filled frames and the target, for the truth and the result.
+            // A skeleton without the model's legs (synthetic tests) gets no foot skating (NaN), the rest as usual.
+            FootRig? feet = FootRig.HasModelLegs(skeleton) ? FootRig.ForModel(skeleton) : null;
+            IReadOnlyList<int> footJoints = feet != null ? feet.FootJoints : Array.Empty<int>();
+            int footCount = footJoints.Count;
+            var truthFeet = new double[(maxMissing + 2) * footCount * 3];
+            var resultFeet = new double[(maxMissing + 2) * footCount * 3];
+            var keyPositions = new double[jointCount * 3];
+            var keyRotations = new double[jointCount * 4];
             var root = new double[window * 3];
             var rotations = new double[window * jointCount * 4];
             var truthPositions = new double[maxMissing * jointCount * 3];
@@ -113,6 +128,8 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                 }
 
                 MotionClip clip = animation.Motion;
+                // The file's ground level, as bakes take it from their clip (window normalization moves X and Z only).
+                double ground = feet != null ? FootSkating.GroundLevel(FootSkating.FootPositions(clip, 0, clip.FrameCount, footJoints), footCount) : 0;
                 // The official pipeline fixes quaternion signs once per file, before windowing; L2Q and
                 // NPSS compare raw components, so the sign convention is part of the metric.
                 var fixedRotations = (double[])clip.LocalRotations.Clone();
@@ -134,6 +151,20 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                         Span<double> tr = truthRotations.AsSpan(0, rotLen);
                         ForwardKinematics.Compute(skeleton, n, root.AsSpan(past * 3, n * 3), rotations.AsSpan(past * jointCount * 4, rotLen), tp, tr);
                         npss[l].SetTruth(tr);
+                        int feetLength = (n + 2) * footCount * 3;
+                        if (feet != null)
+                        {
+                            // The keys around the gap are the truth's in every method's result too.
+                            KeyFeet(skeleton, root, rotations, past - 1, jointCount, footJoints, keyPositions, keyRotations, truthFeet, 0);
+                            KeyFeet(skeleton, root, rotations, past + n, jointCount, footJoints, keyPositions, keyRotations, truthFeet, n + 1);
+                            CopyFeet(tp, n, jointCount, footJoints, truthFeet);
+                            truthFeet.AsSpan(0, footCount * 3).CopyTo(resultFeet);
+                            truthFeet.AsSpan((n + 1) * footCount * 3, footCount * 3).CopyTo(resultFeet.AsSpan((n + 1) * footCount * 3));
+                            MetricTotals gt = truthTotals[l];
+                            int truthSamples = 0;
+                            FootSkating.Accumulate(truthFeet.AsSpan(0, feetLength), truthFeet.AsSpan(0, feetLength), footCount, clip.FrameTime, clip.FrameTime, ground, feet.LegLength, ref gt.FootSkatingSum, ref truthSamples);
+                            gt.FootContactSamples += truthSamples;
+                        }
 
                         for (int m = 0; m < methods.Count; m++)
                         {
@@ -150,6 +181,13 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                             t.L2QSum += l2q;
                             t.L2PSum += l2p;
                             t.FrameCount += n;
+                            if (feet != null)
+                            {
+                                CopyFeet(pp, n, jointCount, footJoints, resultFeet);
+                                int samples = 0;
+                                FootSkating.Accumulate(truthFeet.AsSpan(0, feetLength), resultFeet.AsSpan(0, feetLength), footCount, clip.FrameTime, clip.FrameTime, ground, feet.LegLength, ref t.FootSkatingSum, ref samples);
+                                t.FootContactSamples += samples;
+                            }
                             npss[l].Accumulate(pr, ref t.NpssWeightedSum, ref t.NpssWeightSum);
                             if (!double.IsFinite(l2q) || !double.IsFinite(l2p) || !double.IsFinite(t.NpssWeightedSum) || !double.IsFinite(t.NpssWeightSum))
                             {
@@ -168,7 +206,25 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                 }
             }
 
-            return new BenchmarkReport(totalWindows, options, statistics.Source, ids, names, totals);
+            return new BenchmarkReport(totalWindows, options, statistics.Source, ids, names, totals, truthTotals);
+        }
+
+        // Foot-joint positions of window frame `frame` (a key) into slot `slot` of `feetBuffer`.
+        private static void KeyFeet(Skeleton skeleton, double[] root, double[] rotations, int frame, int jointCount, IReadOnlyList<int> footJoints,
+            double[] positions, double[] globalRotations, double[] feetBuffer, int slot)
+        {
+            ForwardKinematics.Compute(skeleton, 1, root.AsSpan(frame * 3, 3), rotations.AsSpan(frame * jointCount * 4, jointCount * 4), positions, globalRotations);
+            for (int k = 0; k < footJoints.Count; k++) Array.Copy(positions, footJoints[k] * 3, feetBuffer, (slot * footJoints.Count + k) * 3, 3);
+        }
+
+        // Foot-joint positions of n filled frames (global positions, frames × joints × 3) into slots 1..n.
+        private static void CopyFeet(ReadOnlySpan<double> globalPositions, int n, int jointCount, IReadOnlyList<int> footJoints, double[] feetBuffer)
+        {
+            int c = footJoints.Count;
+            for (int f = 0; f < n; f++)
+            {
+                for (int k = 0; k < c; k++) globalPositions.Slice((f * jointCount + footJoints[k]) * 3, 3).CopyTo(feetBuffer.AsSpan(((f + 1) * c + k) * 3, 3));
+            }
         }
     }
 }

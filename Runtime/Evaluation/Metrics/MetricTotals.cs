@@ -3,7 +3,8 @@ namespace DeltaInterpolator.Evaluation.Metrics
     /// <summary>
     /// Running sums of the three benchmark metrics for one method and one transition length, in
     /// double, over any number of windows. The averages are the official ones: L2Q and L2P are means
-    /// over (window, frame); NPSS is the power-weighted mean over (window, feature).
+    /// over (window, frame); NPSS is the power-weighted mean over (window, feature). Foot skating (not an
+    /// official metric; an extra table) is the mean over the (frame, foot joint) samples where the truth is planted.
     /// </summary>
     public sealed class MetricTotals
     {
@@ -30,5 +31,14 @@ namespace DeltaInterpolator.Evaluation.Metrics
 
         /// <summary>Power-weighted NPSS.</summary>
         public double Npss => NpssWeightedSum / NpssWeightSum;
+
+        /// <summary>Σ of the result's foot-joint speeds where the truth's are planted (leg lengths per second; <see cref="Baking.FootSkating"/>).</summary>
+        public double FootSkatingSum;
+
+        /// <summary>Number of (filled frame, foot joint) samples where the truth's foot is planted.</summary>
+        public long FootContactSamples;
+
+        /// <summary>Mean foot skating, leg lengths per second (<see cref="Baking.FootSkating"/>); NaN without samples.</summary>
+        public double FootSkating => FootContactSamples == 0 ? double.NaN : FootSkatingSum / FootContactSamples;
     }
 }

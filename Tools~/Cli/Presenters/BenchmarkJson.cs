@@ -40,9 +40,14 @@ namespace DeltaInterpolator.Cli.Presenters
                 WriteMetric(w, report, id, "l2q", t => t.L2Q);
                 WriteMetric(w, report, id, "l2p", t => t.L2P);
                 WriteMetric(w, report, id, "npss", t => t.Npss);
+                WriteMetric(w, report, id, "foot_skating", t => t.FootSkating);
                 w.WriteEndObject();
             }
 
+            w.WriteEndObject();
+            // Not an official metric: the ground truth's own foot skating, the floor of "foot_skating".
+            w.WriteStartObject("ground_truth_foot_skating");
+            foreach (int n in report.Lengths) WriteNumberOrNull(w, n.ToString(CultureInfo.InvariantCulture), report.GroundTruth(n).FootSkating);
             w.WriteEndObject();
             w.WriteEndObject();
         }
@@ -50,8 +55,15 @@ namespace DeltaInterpolator.Cli.Presenters
         private static void WriteMetric(Utf8JsonWriter w, BenchmarkReport report, string id, string name, Func<MetricTotals, double> value)
         {
             w.WriteStartObject(name);
-            foreach (int n in report.Lengths) w.WriteNumber(n.ToString(CultureInfo.InvariantCulture), value(report.Get(id, n)));
+            foreach (int n in report.Lengths) WriteNumberOrNull(w, n.ToString(CultureInfo.InvariantCulture), value(report.Get(id, n)));
             w.WriteEndObject();
+        }
+
+        // Foot skating has no value where no window has a planted ground-truth foot: null, not NaN (invalid JSON).
+        private static void WriteNumberOrNull(Utf8JsonWriter w, string name, double value)
+        {
+            if (double.IsFinite(value)) w.WriteNumber(name, value);
+            else w.WriteNull(name);
         }
     }
 }

@@ -3,7 +3,9 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using DeltaInterpolator.Core;
+using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.Evaluation.Benchmark;
+using DeltaInterpolator.Evaluation.Metrics;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Rotations;
@@ -164,6 +166,19 @@ namespace DeltaInterpolator.Tests.Benchmark
                     CheckPrinted(totals.L2P, method.Value[1][l], 4, $"{method.Key} L2P@{lengths[l]}");
                     CheckPrinted(totals.Npss, method.Value[2][l], 5, $"{method.Key} NPSS@{lengths[l]}");
                 }
+            }
+
+            // The extra foot-skating table: every method is scored on the ground truth's planted samples, and the truth's
+            // own skating (below the contact speed by definition) lies under SLERP's, which slides a stance foot.
+            foreach (int n in lengths)
+            {
+                MetricTotals truth = report.GroundTruth(n), slerp = report.Get("slerp", n), zero = report.Get("zerovel", n);
+                TestContext.WriteLine($"foot skating at {n}: truth {truth.FootSkating:F4}, SLERP {slerp.FootSkating:F4}, zero-velocity {zero.FootSkating:F4} leg lengths/s over {truth.FootContactSamples} samples");
+                Assert.That(truth.FootContactSamples, Is.GreaterThan(100 * n), $"planted samples at {n}");
+                Assert.That(slerp.FootContactSamples, Is.EqualTo(truth.FootContactSamples));
+                Assert.That(zero.FootContactSamples, Is.EqualTo(truth.FootContactSamples));
+                Assert.That(truth.FootSkating, Is.GreaterThan(0).And.LessThan(FootSkating.ContactSpeed));
+                Assert.That(slerp.FootSkating, Is.GreaterThan(truth.FootSkating));
             }
         }
 
