@@ -47,6 +47,24 @@ namespace DeltaInterpolator.Preview
                     double[] offset = layout.OffsetOf(t, scene.Tracks.Count);
                     WriteVector(json, "offset", new[] { Round(offset[0], layout.Quantum), 0, Round(offset[2], layout.Quantum) });
                     WritePositions(json, track, layout.Quantum);
+                    if (track.FootJoints != null && track.Planted != null)
+                    {
+                        // Planted foot joints: one bit mask per frame (bit k: FootJoints[k] planted).
+                        json.WriteStartArray("footJoints");
+                        foreach (int j in track.FootJoints) json.WriteNumberValue(j);
+                        json.WriteEndArray();
+                        json.WriteStartArray("planted");
+                        int c = track.FootJoints.Length;
+                        for (int f = 0; f < track.FrameCount; f++)
+                        {
+                            int mask = 0;
+                            for (int k = 0; k < c; k++) if (track.Planted[f * c + k]) mask |= 1 << k;
+                            json.WriteNumberValue(mask);
+                        }
+
+                        json.WriteEndArray();
+                    }
+
                     if (scene.GroundTruthTrack >= 0 && t != scene.GroundTruthTrack)
                     {
                         json.WriteNumber("meanError", Round(scene.MeanErrorBetweenKeys(t), layout.Quantum));

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using DeltaInterpolator.Core.Kinematics;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -53,6 +54,35 @@ namespace DeltaInterpolator.Preview
             ForwardKinematics.ComputeWithLocalPositions(clip.Skeleton, clip.FrameCount, clip.LocalPositions, clip.LocalRotations, positions, rotations);
             return new PreviewTrack(name, j, positions);
         }
+
+        /// <summary>
+        /// Marks where this track's feet are planted: <paramref name="footJoints"/> (joint indices) and, per frame,
+        /// one flag per foot joint (frames × foot joints). The player draws a planted joint's footprint on the floor.
+        /// </summary>
+        /// <exception cref="ArgumentException">The flags are not frames × foot joints, or a joint index is out of range.</exception>
+        public void MarkPlantedFeet(IReadOnlyList<int> footJoints, bool[] planted)
+        {
+            if (footJoints == null) throw new ArgumentNullException(nameof(footJoints));
+            if (planted == null) throw new ArgumentNullException(nameof(planted));
+            foreach (int j in footJoints)
+            {
+                if (j < 0 || j >= JointCount) throw new ArgumentException($"track '{Name}': foot joint {j} is not one of its {JointCount} joints", nameof(footJoints));
+            }
+
+            if (footJoints.Count == 0 || footJoints.Count > 30 || planted.Length != FrameCount * footJoints.Count)
+            {
+                throw new ArgumentException($"track '{Name}': {planted.Length} planted flags for {footJoints.Count} foot joints; expected {FrameCount} frames × 1–30 foot joints", nameof(planted));
+            }
+
+            FootJoints = new List<int>(footJoints).ToArray();
+            Planted = planted;
+        }
+
+        /// <summary>The joints <see cref="Planted"/> flags, or null when no feet are marked.</summary>
+        public int[]? FootJoints { get; private set; }
+
+        /// <summary>Frames × <see cref="FootJoints"/> flags: true where that foot joint is planted; null when not marked.</summary>
+        public bool[]? Planted { get; private set; }
 
         /// <summary>The label shown beside the skeleton.</summary>
         public string Name { get; }

@@ -45,6 +45,13 @@ namespace DeltaInterpolator.Evaluation.Baking
             }
         }
 
+        /// <summary>The feet of the rig <paramref name="run"/> baked on (<paramref name="rigSkeleton"/>): its map's source legs, or the model's.</summary>
+        public static FootRig Feet(BakeRun run, Skeleton rigSkeleton)
+        {
+            if (run == null) throw new ArgumentNullException(nameof(run));
+            return run.Rig.Map != null ? FootRig.ForSource(run.Rig.Map) : FootRig.ForModel(rigSkeleton);
+        }
+
         /// <summary>Scores every method of <paramref name="run"/> against <paramref name="truth"/>, the rig's clip it baked from.</summary>
         /// <param name="truth">The rig's clip (the keys' source).</param>
         /// <param name="run">The bake.</param>
@@ -53,7 +60,7 @@ namespace DeltaInterpolator.Evaluation.Baking
         {
             if (truth == null) throw new ArgumentNullException(nameof(truth));
             if (run == null) throw new ArgumentNullException(nameof(run));
-            FootRig feet = run.Rig.Map != null ? FootRig.ForSource(run.Rig.Map) : FootRig.ForModel(truth.Skeleton);
+            FootRig feet = Feet(run, truth.Skeleton);
             var methods = new MethodScore[run.Methods.Count];
             for (int i = 0; i < methods.Length; i++)
             {

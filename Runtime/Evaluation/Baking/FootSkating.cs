@@ -133,6 +133,35 @@ namespace DeltaInterpolator.Evaluation.Baking
         }
 
         /// <summary>
+        /// Which foot joints are planted on each frame by the contact rule the measure applies to the truth
+        /// (within <see cref="ContactHeight"/> of <paramref name="ground"/>, slower than <see cref="ContactSpeed"/>):
+        /// frames × <paramref name="footJoints"/> flags. Speeds are central differences (one-sided on the first and
+        /// last frame). The preview marks these, on any track.
+        /// </summary>
+        public static bool[] Planted(ReadOnlySpan<double> feet, int footJoints, double frameTime, double ground, double legLength)
+        {
+            int n = footJoints;
+            int frames = feet.Length / (3 * n);
+            var planted = new bool[frames * n];
+            double heightLimit = ground + ContactHeight * legLength;
+            double speedLimit = ContactSpeed * legLength;
+            for (int f = 0; f < frames; f++)
+            {
+                int before = Math.Max(0, f - 1), after = Math.Min(frames - 1, f + 1);
+                if (after == before) continue;
+                for (int k = 0; k < n; k++)
+                {
+                    if (feet[(f * n + k) * 3 + 1] > heightLimit) continue;
+                    int a = (after * n + k) * 3, b = (before * n + k) * 3;
+                    double dx = feet[a] - feet[b], dz = feet[a + 2] - feet[b + 2];
+                    planted[f * n + k] = Math.Sqrt(dx * dx + dz * dz) / ((after - before) * frameTime) < speedLimit;
+                }
+            }
+
+            return planted;
+        }
+
+        /// <summary>
         /// A clip's ground level: the <see cref="GroundPercentile"/>th percentile over its frames of the lowest
         /// foot-joint height (<paramref name="feet"/>: frames × <paramref name="footJoints"/> × 3 positions).
         /// </summary>

@@ -2,9 +2,11 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.IO;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Core.Workflows;
+using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.Preview;
 using Spectre.Console;
 
@@ -31,6 +33,18 @@ namespace DeltaInterpolator.Cli.Baking
             ContactSheet.CheckOutputs(pngPath, force, taken, inputs);
         }
 
+        // Each track's planted feet by the contact rule foot skating scores with, on the ground truth's ground level.
+        private static void MarkPlantedFeet(PreviewScene scene, MotionClip[] clips, FootRig feet)
+        {
+            IReadOnlyList<int> joints = feet.FootJoints;
+            double ground = FootSkating.GroundLevel(FootSkating.FootPositions(clips[0], 0, clips[0].FrameCount, joints), joints.Count);
+            for (int t = 0; t < clips.Length; t++)
+            {
+                double[] positions = FootSkating.FootPositions(clips[t], 0, clips[t].FrameCount, joints);
+                scene.Tracks[t].MarkPlantedFeet(joints, FootSkating.Planted(positions, joints.Count, clips[t].FrameTime, ground, feet.LegLength));
+            }
+        }
+
         /// <summary>The HTML player (and contact sheet) of ground truth, SLERP and model over the baked frames, on the input's skeleton.</summary>
         public static void Write(BvhAnimation animation, BakeRun run, string htmlPath, string? pngPath, bool force)
         {
@@ -40,7 +54,9 @@ namespace DeltaInterpolator.Cli.Baking
             var keys = new int[run.RigKeys.Count];
             for (int i = 0; i < keys.Length; i++) keys[i] = run.RigKeys[i] - first;
             string title = Path.GetFileName(animation.SourceName) + $", frames {first}–{run.RigKeys[keys.Length - 1]}";
-            PreviewScene scene = PreviewScene.FromClips(title, new[] { ("Ground truth", truth), ("SLERP", run["SLERP"].OnRig), ("Model", model) }, keys, 0);
+            MotionClip[] clips = { truth, run["SLERP"].OnRig, model };
+            PreviewScene scene = PreviewScene.FromClips(title, new[] { ("Ground truth", clips[0]), ("SLERP", clips[1]), ("Model", clips[2]) }, keys, 0);
+            MarkPlantedFeet(scene, clips, BakeScores.Feet(run, truth.Skeleton));
             PreviewWriter.WriteHtml(scene, htmlPath);
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB): ground truth, SLERP and model, {2} frames, {3} keys", htmlPath, new FileInfo(htmlPath).Length / 1024.0, scene.FrameCount, keys.Length)));
             if (pngPath == null) return;

@@ -15,7 +15,8 @@
       for (var f = 0; f < n; f++) { acc += d[f * stride + k]; pos[f * stride + k] = acc * q; }
     }
     return { index: index, name: t.name, color: t.color, frames: n, pos: pos, offset: t.offset,
-             errors: t.errors ? t.errors.map(function (e) { return e * q; }) : null, meanError: t.meanError };
+             errors: t.errors ? t.errors.map(function (e) { return e * q; }) : null, meanError: t.meanError,
+             footJoints: t.footJoints || null, planted: t.planted || null };
   });
   var heads = [];
   for (var j = 0; j < J; j++) {
@@ -32,6 +33,8 @@
     fps: data.fps,
     keys: keys.slice(),
     setFrame: function (k) { setFrame(k); },
+    // The foot joints of track `t` planted at the current frame (drawn as footprints on the floor).
+    plantedAt: function (t) { return plantedJoints(tracks[t], state.frame); },
     play: function () { setPlaying(true); },
     pause: function () { setPlaying(false); }
   };
@@ -58,6 +61,10 @@
       chip.appendChild(small(' mean error ' + fmt(t.meanError) + (keys.length ? ' between keys' : '')));
     }
     legend.appendChild(chip);
+    if (t.planted && !legend.dataset.planted) {
+      legend.dataset.planted = '1';
+      legend.appendChild(small('ellipses on the floor: planted feet (within 3 % of a leg length of the ground, slower than 15 % of a leg length per second)'));
+    }
   });
   var km = document.getElementById('keymarks');
   keys.forEach(function (k) {
@@ -151,6 +158,13 @@
     }
   }
 
+  function plantedJoints(t, frame) {
+    if (!t || !t.planted) return [];
+    var mask = t.planted[Math.min(frame, t.frames - 1)], out = [];
+    t.footJoints.forEach(function (j, k) { if (mask & (1 << k)) out.push(j); });
+    return out;
+  }
+
   function jointAt(t, frame, j) {
     var i = (Math.min(frame, t.frames - 1) * J + j) * 3;
     return [t.pos[i] + t.offset[0], t.pos[i + 1], t.pos[i + 2] + t.offset[2]];
@@ -179,6 +193,14 @@
         ctx.lineWidth = boneWidth * view.f / ((a[2] + b[2]) / 2);
         ctx.beginPath(); ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.stroke();
       }
+      // Planted feet: a footprint in the track's colour on the floor under each planted foot joint.
+      plantedJoints(t, frame).forEach(function (pj) {
+        var s = shadow[pj];
+        if (!s) return;
+        var r = Math.max(3, 0.05 * H * view.f / s[2]);
+        ctx.beginPath(); ctx.ellipse(s[0], s[1], r, 0.45 * r, 0, 0, 2 * Math.PI);
+        ctx.fillStyle = t.color; ctx.globalAlpha = 0.55; ctx.fill(); ctx.globalAlpha = 1;
+      });
       for (j = 1; j < J; j++) {
         var p0 = pts[j], p1 = pts[data.parents[j]];
         if (p0 && p1) items.push({ kind: 0, a: p1, b: p0, depth: (p0[2] + p1[2]) / 2, t: t });

@@ -61,6 +61,53 @@ namespace DeltaInterpolator.Tests.Preview
         }
 
         [Test]
+        public async Task PlantedFeetAreMarkedOnTheFramesTheFlagsSay()
+        {
+            string chromium = RequireChromium();
+            MotionClip walker = PreviewMotion.Walker(60);
+            PreviewScene scene = PreviewScene.FromClips("planted", new[] { ("a", walker), ("b", PreviewMotion.Wobbled(walker, 10)) });
+            // Two "foot" joints: the first planted on even frames, the second from frame 30 on; track b unmarked.
+            int[] feet = { walker.Skeleton.JointCount - 1, walker.Skeleton.JointCount - 2 };
+            var planted = new bool[60 * 2];
+            for (int f = 0; f < 60; f++)
+            {
+                planted[2 * f] = f % 2 == 0;
+                planted[2 * f + 1] = f >= 30;
+            }
+
+            scene.Tracks[0].MarkPlantedFeet(feet, planted);
+            Assert.Throws<ArgumentException>(() => scene.Tracks[1].MarkPlantedFeet(feet, new bool[7]), "flags that are not frames × foot joints");
+            string html = Path.Combine(_folder, "planted.html");
+            PreviewWriter.WriteHtml(scene, html);
+            (IPlaywright playwright, IBrowser browser) = await Chromium.LaunchAsync(chromium);
+            try
+            {
+                IPage page = await browser.NewPageAsync();
+                var problems = Watch(page, out List<string> requests);
+                await page.GotoAsync(new Uri(html).AbsoluteUri);
+                await page.WaitForFunctionAsync("window.preview !== undefined");
+                await page.EvaluateAsync("window.preview.pause()");
+                foreach (int frame in new[] { 0, 1, 30, 31, 59 })
+                {
+                    await page.EvaluateAsync($"window.preview.setFrame({frame})");
+                    var expected = new List<int>();
+                    if (frame % 2 == 0) expected.Add(feet[0]);
+                    if (frame >= 30) expected.Add(feet[1]);
+                    Assert.That(await page.EvaluateAsync<int[]>("window.preview.plantedAt(0)"), Is.EqualTo(expected.ToArray()), $"track a, frame {frame}");
+                    Assert.That(await page.EvaluateAsync<int[]>("window.preview.plantedAt(1)"), Is.Empty, $"track b, frame {frame}");
+                }
+
+                Assert.That(await page.Locator("#legend").TextContentAsync(), Does.Contain("planted feet"));
+                Assert.That(problems, Is.Empty);
+            }
+            finally
+            {
+                await browser.CloseAsync();
+                playwright.Dispose();
+            }
+        }
+
+        [Test]
         public async Task HtmlWithoutGroundTruthHasNoErrorPlot()
         {
             string chromium = RequireChromium();

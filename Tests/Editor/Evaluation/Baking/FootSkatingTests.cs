@@ -19,6 +19,31 @@ namespace DeltaInterpolator.Tests.Baking
         private static readonly int[] Keys = { 0, 10, 20, 30 };
 
         [Test]
+        public void PlantedFlagsFollowTheContactRuleOnAnyTrack()
+        {
+            // One foot joint, leg length 1, 30 fps, ground 0: still on the ground (frames 0-9), sliding at 0.6 leg/s
+            // on the ground (10-19), lifted 0.05 and still (20-29).
+            const double dt = 1.0 / 30;
+            var feet = new double[30 * 3];
+            double x = 0;
+            for (int f = 0; f < 30; f++)
+            {
+                if (f >= 10 && f < 20) x += 0.6 * dt;
+                feet[3 * f] = x;
+                feet[3 * f + 1] = f >= 20 ? 0.05 : 0.0;
+            }
+
+            bool[] planted = FootSkating.Planted(feet, 1, dt, 0.0, 1.0);
+            Assert.That(planted.Length, Is.EqualTo(30));
+            for (int f = 0; f < 30; f++)
+            {
+                // Frame 9's central difference already sees frame 10's step (0.3 leg/s: above the limit).
+                bool expected = f < 9;
+                Assert.That(planted[f], Is.EqualTo(expected), $"frame {f}");
+            }
+        }
+
+        [Test]
         public void FeetSlidingAtAKnownSpeedMeasureThatSpeedInLegLengthsPerSecond()
         {
             Skeleton s = FeetFixtures.LowerBody();
