@@ -12,11 +12,11 @@ namespace DeltaInterpolator.Unity
     public sealed class InbetweenerSettings : ScriptableObject
     {
         [SerializeField]
-        [Tooltip("The in-betweening model (created when an exported .onnx is imported).")]
+        [Tooltip("The in-betweening model asset (Assets > Create > Δ-Interpolator > In-betweening Model, pointing at the exported .onnx graphs).")]
         private InbetweeningModel? model = null;
 
         [SerializeField]
-        [Tooltip("The inference engine, by name (\"Sentis\" with com.unity.ai.inference installed).")]
+        [Tooltip("The inference engine, by name: \"Sentis\" (CPU) or \"Sentis GPU\" (compute shaders); another engine's name once its assembly registers it.")]
         private string backend = "Sentis";
 
         [SerializeField]

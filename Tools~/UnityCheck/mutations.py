@@ -27,7 +27,7 @@ import unity_compile as uc  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 KEEP = ('.cs', '.asmdef', '.asmref', '.rsp', '.json', '.meta', '.md')
-SKIP_DIRS = {'.git', 'Tools~', 'Training', 'UnityPackage', 'Fixtures', 'Models', 'node_modules', 'obj', 'bin'}
+SKIP_DIRS = {'.git', 'Tools~', 'Training', 'UnityPackage', 'Fixtures~', 'Models', 'node_modules', 'obj', 'bin'}
 
 
 def copy_package(dst):

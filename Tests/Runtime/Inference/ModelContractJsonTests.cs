@@ -22,9 +22,9 @@ namespace DeltaInterpolator.Tests.Inference
             RoundTrip(c, ModelContractTests.MetadataJson());
         }
 
-        [TestCase("Tests/Fixtures/tiny-model.onnx")]
-        [TestCase("Tests/Fixtures/tiny-model.keys.onnx")]
-        [TestCase("Tests/Fixtures/tiny-model.frame.onnx")]
+        [TestCase("Tests/Fixtures~/tiny-model.onnx")]
+        [TestCase("Tests/Fixtures~/tiny-model.keys.onnx")]
+        [TestCase("Tests/Fixtures~/tiny-model.frame.onnx")]
         [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.onnx")]
         public void AnExportedContractRoundTrips(string relative)
         {
@@ -42,13 +42,13 @@ namespace DeltaInterpolator.Tests.Inference
             Assert.That(c.ToMetadata()[TensorNames.ContractVersionMetadata], Is.EqualTo(metadata[TensorNames.ContractVersionMetadata]));
         }
 
-        [TestCase("Tests/Fixtures/tiny-model.keys.onnx", ModelGraphKind.Keys)]
-        [TestCase("Tests/Fixtures/tiny-model.frame.onnx", ModelGraphKind.Frame)]
+        [TestCase("Tests/Fixtures~/tiny-model.keys.onnx", ModelGraphKind.Keys)]
+        [TestCase("Tests/Fixtures~/tiny-model.frame.onnx", ModelGraphKind.Frame)]
         public void TheWholeContractForAnotherGraphIsThatGraphsContract(string relative, ModelGraphKind kind)
         {
             // An engine asset keeps the whole graph's contract once; the Sentis factory describes the keys
             // and frame graphs with ForGraph(kind): it must equal what those exported files carry.
-            ModelContract whole = ModelContract.FromMetadata("whole", OnnxMetadataReader.Read(Repository("Tests/Fixtures/tiny-model.onnx")), new ModelCheckReport())!;
+            ModelContract whole = ModelContract.FromMetadata("whole", OnnxMetadataReader.Read(Repository("Tests/Fixtures~/tiny-model.onnx")), new ModelCheckReport())!;
             ModelContract exported = ModelContract.FromMetadata("other", OnnxMetadataReader.Read(Repository(relative)), new ModelCheckReport())!;
             ModelContract forGraph = whole.ForGraph(kind);
             Assert.That(forGraph.Graph, Is.EqualTo(kind));

@@ -8,7 +8,7 @@ using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
-    /// <summary>Tests/Fixtures (written by `python3 -m deltainterp fixtures --out Tests/Fixtures`) and its golden vectors.</summary>
+    /// <summary>Tests/Fixtures~ (written by `python3 -m deltainterp fixtures --out Tests/Fixtures~`) and its golden vectors.</summary>
     public static class Fixtures
     {
         /// <summary>The fixtures folder; fails the test with what to run when it is missing.</summary>
@@ -19,17 +19,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 string? dir = AppContext.BaseDirectory;
                 while (dir != null)
                 {
-                    string candidate = Path.Combine(dir, "Tests", "Fixtures");
+                    string candidate = Path.Combine(dir, "Tests", "Fixtures~");
                     if (File.Exists(Path.Combine(candidate, "golden.json"))) return candidate;
                     dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
                 }
 
-                Assert.Fail("Tests/Fixtures/golden.json not found above " + AppContext.BaseDirectory + "; run `PYTHONPATH=Training/Python~ python3 -m deltainterp fixtures --out Tests/Fixtures`");
+                Assert.Fail("Tests/Fixtures~/golden.json not found above " + AppContext.BaseDirectory + "; run `PYTHONPATH=Training/Python~ python3 -m deltainterp fixtures --out Tests/Fixtures~`");
                 return "";
             }
         }
 
-        /// <summary>Tests/Fixtures/tiny-model.onnx.</summary>
+        /// <summary>Tests/Fixtures~/tiny-model.onnx.</summary>
         public static string TinyModel => Path.Combine(Directory, "tiny-model.onnx");
 
         /// <summary>The golden cases.</summary>

@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
     /// The C# pipeline on ONNX Runtime reproduces the PyTorch pipeline on every golden vector of
-    /// Tests/Fixtures: localization, key features, raw network outputs, final rotations, root and joint
+    /// Tests/Fixtures~: localization, key features, raw network outputs, final rotations, root and joint
     /// positions; and lazily decoded frames equal whole-transition frames.
     /// </summary>
     [TestFixture]

@@ -15,9 +15,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     [TestFixture]
     public sealed class OnnxMetadataReaderTests
     {
-        [TestCase("Tests/Fixtures/tiny-model.onnx")]
-        [TestCase("Tests/Fixtures/tiny-model.keys.onnx")]
-        [TestCase("Tests/Fixtures/tiny-model.frame.onnx")]
+        [TestCase("Tests/Fixtures~/tiny-model.onnx")]
+        [TestCase("Tests/Fixtures~/tiny-model.keys.onnx")]
+        [TestCase("Tests/Fixtures~/tiny-model.frame.onnx")]
         [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.onnx")]
         [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.keys.onnx")]
         [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.frame.onnx")]

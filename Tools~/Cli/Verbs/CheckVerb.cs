@@ -52,7 +52,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "Prints every result as Info, Warning or Error with what to do;\n" +
                 "exit status 2 when any is an error (the model would be refused), 0 otherwise.\n" +
                 "Examples:\n  inbetween check Runtime/Models/DeltaInterpolator-LaFAN1.onnx --past 10 --gap 60\n" +
-                "  inbetween check Tests/Fixtures/tiny-model.onnx --skeleton ../shared/data/lafan1/walk4_subject1.bvh");
+                "  inbetween check Tests/Fixtures~/tiny-model.onnx --skeleton ../shared/data/lafan1/walk4_subject1.bvh");
             command.Arguments.Add(_model);
             command.Options.Add(_past);
             command.Options.Add(_gap);

@@ -67,7 +67,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "Each is the median and 95th percentile of many runs after a warm-up. With --pytorch the same request\n" +
                 "is timed in PyTorch eager on the same thread count (same architecture, and the paper's 1024-wide preset).\n" +
                 OutputOptions.HelpText + "\n" +
-                "Example:\n  inbetween speed --model Tests/Fixtures/tiny-model.onnx --threads 1 --pytorch --json out/speed.json");
+                "Example:\n  inbetween speed --model Tests/Fixtures~/tiny-model.onnx --threads 1 --pytorch --json out/speed.json");
             command.Options.Add(_model.Model);
             command.Options.Add(_model.Threads);
             command.Options.Add(_pytorch);

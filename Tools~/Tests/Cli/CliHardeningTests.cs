@@ -180,7 +180,7 @@ namespace DeltaInterpolator.Tests.Cli
         {
             using var temp = new TempFolder();
             string data = DataFolder(temp, "data", CliHarness.WalkClip(130));
-            string model = Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures", "tiny-model.onnx");
+            string model = Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures~", "tiny-model.onnx");
             string line = CliHarness.AssertOneErrorLine(CliHarness.Run("benchmark", "--data", data, "--model", model, "--threads", "1000"), "--threads 1000");
             Assert.That(line, Does.Contain(Environment.ProcessorCount.ToString(System.Globalization.CultureInfo.InvariantCulture)));
             CliHarness.AssertOneErrorLine(CliHarness.Run("speed", "--threads", "1000", "--json", temp["s.json"]), "--threads 1000");
@@ -245,7 +245,7 @@ namespace DeltaInterpolator.Tests.Cli
             using var temp = new TempFolder();
             // A copy: a broken check must not be able to overwrite the repository's fixture.
             string model = temp["tiny-model.onnx"];
-            File.Copy(Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures", "tiny-model.onnx"), model);
+            File.Copy(Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures~", "tiny-model.onnx"), model);
             string unwritable = Directory.Exists("/proc/self") ? "/proc/inbetween-speed.json" : Path.Combine(temp.Write("plain", "x"), "out.json");
             CliRun run = CliHarness.Run("speed", "--model", model, "--json", unwritable);
             CliHarness.AssertOneErrorLine(run, "expected a");

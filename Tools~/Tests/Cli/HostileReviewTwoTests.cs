@@ -245,7 +245,7 @@ namespace DeltaInterpolator.Tests.Cli
         public void CheckShowsHostileModelNamesEscapedAndClipped()
         {
             using var temp = new TempFolder();
-            string tiny = Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures", "tiny-model.onnx");
+            string tiny = Path.Combine(TestEnvironment.RepositoryRoot!, "Tests", "Fixtures~", "tiny-model.onnx");
             foreach (string name in new[] { "evil\u001b]0;pwned\u0007\r\nforged", new string('N', 20_000_000) })
             {
                 string model = temp["named.onnx"];

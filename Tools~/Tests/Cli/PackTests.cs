@@ -144,6 +144,119 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(second, Is.EqualTo(first));
         }
 
+        /// <summary>
+        /// Issue 17: what Unity imports from the tarball <c>inbetween pack</c> writes of this repository. No
+        /// training source (<c>.py</c>), checkpoint (<c>.pt</c>) or test-fixture model (<c>.onnx</c> outside
+        /// <c>Runtime/Models</c>, which Sentis would import into every model picker) may be an asset: each such
+        /// entry must lie under a component Unity hides. Every entry Unity does import has its <c>.meta</c>, and
+        /// so has each folder above it. The shipped models are imported (with their metas). The
+        /// <c>.unitypackage</c>, whose every asset is imported, holds none of those files either.
+        /// </summary>
+        [Test]
+        public void ThisRepositorysTarballImportsNoPythonCheckpointOrFixtureModel()
+        {
+            string root = TestEnvironment.RepositoryRoot ?? "";
+            if (root.Length == 0) Assert.Ignore("the repository (package.json beside Runtime/) is not above the test assembly");
+            Assert.That(File.Exists(Path.Combine(root, "Tests", "Fixtures~", "tiny-model.onnx")), Is.True, "the fixture models this test keeps out of Unity");
+
+            using var temp = new TempFolder();
+            string tgz = temp["package.tgz"];
+            string unityPackage = temp["package.unitypackage"];
+            CliRun run = CliHarness.RunWithin(600, "pack", "--root", root, "--tgz", tgz, "--unitypackage", unityPackage);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString()); // stderr carries the progress bars of a 40 MB pack
+
+            var entries = new HashSet<string>(StringComparer.Ordinal);
+            foreach (string name in TarNames(tgz))
+            {
+                Assert.That(name, Does.StartWith("package/"));
+                entries.Add(name.Substring("package/".Length));
+            }
+
+            var imported = entries.Where(e => !UnityHides(e)).ToList();
+            Assert.That(imported.Where(NotAnAssetOfAPlayer), Is.Empty, "training files or fixture models Unity would import");
+            foreach (string asset in imported.Where(e => !e.EndsWith(".meta", StringComparison.Ordinal)))
+            {
+                Assert.That(entries.Contains(asset + ".meta"), Is.True, asset + " is imported without its .meta");
+                for (int slash = asset.LastIndexOf('/'); slash > 0; slash = asset.LastIndexOf('/', slash - 1))
+                {
+                    Assert.That(entries.Contains(asset.Substring(0, slash) + ".meta"), Is.True, asset.Substring(0, slash) + "/ is imported without its .meta");
+                }
+            }
+
+            Assert.That(imported, Does.Contain("Runtime/Models/DeltaInterpolator-CMU.onnx").And.Contain("Runtime/Models/DeltaInterpolator-CMU.onnx.meta"), "the shipped models are imported");
+            Assert.That(entries.Any(e => e.EndsWith(".py", StringComparison.Ordinal) || e.EndsWith(".pt", StringComparison.Ordinal)), Is.False,
+                "Training/Python~ and Tests/Fixtures~ are not carried at all");
+
+            var unityPaths = new List<string>();
+            static bool IsPathname(string name) => name.EndsWith("/pathname", StringComparison.Ordinal);
+            foreach ((string name, byte[] data) in TarFiles(unityPackage, IsPathname))
+            {
+                if (IsPathname(name)) unityPaths.Add(Encoding.UTF8.GetString(data));
+            }
+
+            const string unityRoot = "Packages/com.deltainterpolator.inbetweening/";
+            Assert.That(unityPaths, Does.Contain(unityRoot + "Runtime/Models/DeltaInterpolator-CMU.onnx"));
+            Assert.That(unityPaths.Where(p => !p.StartsWith(unityRoot, StringComparison.Ordinal)), Is.Empty, "every .unitypackage asset lies in the package");
+            Assert.That(unityPaths.Select(p => p.Substring(unityRoot.Length)).Where(p => UnityHides(p) || NotAnAssetOfAPlayer(p)), Is.Empty,
+                ".unitypackage assets that are hidden, training files or fixture models");
+        }
+
+        /// <summary>
+        /// Unity's hidden-asset rule (manual, "Special folder names → Hidden assets"): a file or folder whose
+        /// name starts with '.', ends with '~', is <c>cvs</c>, or a file with the extension <c>.tmp</c>, and
+        /// everything inside such a folder, is not imported.
+        /// </summary>
+        private static bool UnityHides(string path)
+        {
+            string[] parts = path.Split('/');
+            for (int i = 0; i < parts.Length; i++)
+            {
+                string c = parts[i];
+                if (c.StartsWith(".", StringComparison.Ordinal) || c.EndsWith("~", StringComparison.Ordinal) || string.Equals(c, "cvs", StringComparison.OrdinalIgnoreCase)) return true;
+                if (i == parts.Length - 1 && c.EndsWith(".tmp", StringComparison.OrdinalIgnoreCase)) return true;
+            }
+
+            return false;
+        }
+
+        /// <summary>Python sources and caches, PyTorch checkpoints, and any ONNX model other than the shipped ones.</summary>
+        private static bool NotAnAssetOfAPlayer(string path)
+        {
+            string p = path.EndsWith(".meta", StringComparison.Ordinal) ? path.Substring(0, path.Length - ".meta".Length) : path;
+            string[] training = { ".py", ".pyc", ".pt", ".pth", ".ckpt" };
+            if (training.Any(x => p.EndsWith(x, StringComparison.OrdinalIgnoreCase))) return true;
+            return p.EndsWith(".onnx", StringComparison.OrdinalIgnoreCase) && !p.StartsWith("Runtime/Models/", StringComparison.Ordinal);
+        }
+
+        private static IEnumerable<string> TarNames(string gzipped) => TarFiles(gzipped, _ => false).Select(f => f.Name);
+
+        /// <summary>The regular files of a gzip'd tar, with the bytes of those <paramref name="read"/> selects (others: empty).</summary>
+        private static List<(string Name, byte[] Data)> TarFiles(string gzipped, Func<string, bool> read)
+        {
+            var files = new List<(string, byte[])>();
+            using (FileStream file = File.OpenRead(gzipped))
+            using (var gzip = new GZipStream(file, CompressionMode.Decompress))
+            using (var tar = new TarReader(gzip))
+            {
+                TarEntry? entry;
+                while ((entry = tar.GetNextEntry()) != null)
+                {
+                    if (entry.EntryType == TarEntryType.Directory) continue;
+                    byte[] data = Array.Empty<byte>();
+                    if (read(entry.Name) && entry.DataStream != null)
+                    {
+                        using var memory = new MemoryStream();
+                        entry.DataStream.CopyTo(memory);
+                        data = memory.ToArray();
+                    }
+
+                    files.Add((entry.Name, data));
+                }
+            }
+
+            return files;
+        }
+
         private static byte[] Pack(Action<PackageContents, Stream, Action<int>?> write, PackageContents contents)
         {
             using (var memory = new MemoryStream())

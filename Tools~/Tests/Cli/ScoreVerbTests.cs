@@ -175,7 +175,7 @@ namespace DeltaInterpolator.Tests.Cli
         public void SpeedCharactersTakesHostileValuesAsBadInput()
         {
             // A crowd too large to build is refused before any work (100,000 characters ran out of memory).
-            string tiny = Path.Combine(Root, "Tests", "Fixtures", "tiny-model.onnx");
+            string tiny = Path.Combine(Root, "Tests", "Fixtures~", "tiny-model.onnx");
             foreach (string value in new[] { "-1", "100000", "2147483647", "1e3" })
             {
                 CliHarness.AssertOneErrorLine(CliHarness.RunWithin(60, "speed", "--characters", value, "--model", tiny, "--json", Path.Combine(_dir, "s.json")));

@@ -51,7 +51,7 @@ class LoadedModel:
 REQUIRED_KEYS = ("model", "model_config", "skeleton", "unit_scale")
 FORMAT = "deltainterp-checkpoint"
 FORMAT_VERSION = 2
-EXPECTED = "expected a checkpoint.pt written by `train` (or Tests/Fixtures/tiny-model.pt)"
+EXPECTED = "expected a checkpoint.pt written by `train` (or Tests/Fixtures~/tiny-model.pt)"
 
 
 class CheckpointError(ValueError):

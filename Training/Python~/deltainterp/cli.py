@@ -249,7 +249,7 @@ def _evaluate_export_fixtures(sub) -> None:
         description="Writes tiny-model.pt, tiny-model.onnx (+ .keys.onnx, .frame.onnx) and golden.json "
                     "into --out. Deterministic: the same bytes on every run. Regenerating replaces them by "
                     "design (no --force; each through a temporary file + rename).")
-    p.add_argument("--out", default="Tests/Fixtures", help="output folder (default Tests/Fixtures)")
+    p.add_argument("--out", default="Tests/Fixtures~", help="output folder (default Tests/Fixtures~)")
     p.add_argument("--data", default=DEFAULT_DATA,
                    help="LaFAN1 folder for the skeleton (optional: a built-in copy is used without it)")
 

@@ -198,7 +198,7 @@ def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -
     from .export import export_model
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
-        raise ValueError(f"{out}: is a file, not a folder; expected the fixtures folder (Tests/Fixtures)")
+        raise ValueError(f"{out}: is a file, not a folder; expected the fixtures folder (Tests/Fixtures~)")
     out.mkdir(parents=True, exist_ok=True)
     loaded = make_tiny_model(lafan1_skeleton(data_dir))
     ckpt = out / f"{MODEL_NAME}.pt"

@@ -215,7 +215,7 @@ def test_context_frames_refuse_bad_requests():
 def test_fewer_past_frames_change_only_the_model_row(lafan1_dir):
     from conftest import REPO
     from deltainterp.checkpoint import load_checkpoint
-    loaded = load_checkpoint(REPO / "Tests" / "Fixtures" / "tiny-model.pt")
+    loaded = load_checkpoint(REPO / "Tests" / "Fixtures~" / "tiny-model.pt")
     full = run_benchmark(lafan1_dir, STATS, lengths=(5,), loaded=loaded, progress=False)
     short = run_benchmark(lafan1_dir, STATS, lengths=(5,), loaded=loaded, progress=False, past_frames=3)
     assert short["past_frames"] == 3 and "past_frames" not in full

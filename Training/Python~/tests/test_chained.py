@@ -40,7 +40,7 @@ def test_the_network_changes_the_chained_result(tiny, synthetic_pack_path):
 def test_the_chained_verb_prints_every_spacing(synthetic_pack_path, capsys):
     from pathlib import Path
     from deltainterp.cli import main
-    tiny_pt = Path(__file__).resolve().parents[3] / "Tests" / "Fixtures" / "tiny-model.pt"
+    tiny_pt = Path(__file__).resolve().parents[3] / "Tests" / "Fixtures~" / "tiny-model.pt"
     assert main(["chained", "--data", str(synthetic_pack_path), "--checkpoint", str(tiny_pt), "--every", "15", "30"]) == 0
     lines = capsys.readouterr().out.strip().splitlines()
     assert len(lines) == 2 and "every 15: 2 tails" in lines[0] and "every 30:" in lines[1] and "vs SLERP" in lines[1]

@@ -20,7 +20,7 @@ from deltainterp.onnx_reference import run_model
 from deltainterp.operators import ALLOWED, OperatorError, check_operators
 
 REPO = Path(__file__).resolve().parents[3]
-FIXTURES = REPO / "Tests" / "Fixtures"
+FIXTURES = REPO / "Tests" / "Fixtures~"
 CSHARP_CONTRACT = REPO / "Runtime" / "Core" / "Inference" / "ModelContract.cs"
 
 
@@ -149,7 +149,7 @@ def test_fixtures_are_deterministic_and_up_to_date(tmp_path):
     for key in a:
         assert a[key].read_bytes() == b[key].read_bytes(), f"{a[key].name} differs between two runs"
     if not (FIXTURES / "golden.json").exists():
-        pytest.skip("Tests/Fixtures has not been written yet")
+        pytest.skip("Tests/Fixtures~ has not been written yet")
     for key, path in a.items():
         committed = FIXTURES / path.name
         stale = f"{committed} is stale: run `PYTHONPATH=Training/Python~ python3 -m deltainterp fixtures`"

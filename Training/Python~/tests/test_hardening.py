@@ -180,7 +180,7 @@ def test_a_crafted_pickle_is_refused_without_running(kind, tmp_path, capsys, syn
 
 def test_a_version_1_checkpoint_still_loads_and_resumes_exactly(synthetic_pack_path, tmp_path):
     """Checkpoints written before this change (a pickled dict with floats, tuples and RNG dicts, as train.py
-    and fixtures wrote them): the run in progress and Tests/Fixtures/tiny-model.pt of older trees."""
+    and fixtures wrote them): the run in progress and Tests/Fixtures~/tiny-model.pt of older trees."""
     straight = read_checkpoint(train(run_config(synthetic_pack_path, tmp_path / "a", 9), progress=False))
     train(run_config(synthetic_pack_path, tmp_path / "b", 4), progress=False)
     ckpt = tmp_path / "b" / "checkpoint.pt"
@@ -202,7 +202,7 @@ def test_the_new_format_loads_with_torch_weights_only(tiny_checkpoint):
 
 
 def test_the_committed_fixture_checkpoint_loads():
-    fixture = Path(__file__).resolve().parents[3] / "Tests" / "Fixtures" / "tiny-model.pt"
+    fixture = Path(__file__).resolve().parents[3] / "Tests" / "Fixtures~" / "tiny-model.pt"
     loaded = load_checkpoint(fixture)
     assert loaded.config.joints == 22 and loaded.unit_scale == pytest.approx(0.01)
 

@@ -23,7 +23,7 @@ from deltainterp.warm_start import WarmStartError, load_exported_model
 
 from conftest import REPO, TRAINING, synthetic_motion
 
-FIXTURES = REPO / "Tests" / "Fixtures"
+FIXTURES = REPO / "Tests" / "Fixtures~"
 HEADER = ("HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation "
           "Yrotation Xrotation\n  End Site\n  {\n    OFFSET 0 1 0\n  }\n}\nMOTION\n")
 STATS = {"x_mean": [0.0] * 3, "x_std": [1.0] * 3, "offsets": []}  # one joint, as HEADER

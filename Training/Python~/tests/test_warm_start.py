@@ -8,7 +8,7 @@ from conftest import REPO
 from deltainterp.checkpoint import load_checkpoint
 from deltainterp.warm_start import WarmStartError, load_exported_model, load_onnx_weights
 
-FIXTURES = REPO / "Tests" / "Fixtures"
+FIXTURES = REPO / "Tests" / "Fixtures~"
 
 
 def test_weights_from_the_tiny_fixture_equal_its_checkpoint():

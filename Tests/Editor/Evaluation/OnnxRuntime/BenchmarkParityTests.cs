@@ -13,8 +13,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
     /// The C# benchmark's model row equals Python's <c>evaluate --checkpoint</c> on the same weights to
-    /// 1e-3 at every length: for the tiny fixture (Tests/Fixtures/tiny-model.benchmark.json, from
-    /// tiny-model.pt) and for the shipped model (Tests/Fixtures/shipped-model.benchmark.json, from the
+    /// 1e-3 at every length: for the tiny fixture (Tests/Fixtures~/tiny-model.benchmark.json, from
+    /// tiny-model.pt) and for the shipped model (Tests/Fixtures~/shipped-model.benchmark.json, from the
     /// checkpoint it was exported from). Needs LaFAN1 (skips without it).
     /// </summary>
     [TestFixture]

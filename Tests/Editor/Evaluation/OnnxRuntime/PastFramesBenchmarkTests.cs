@@ -13,7 +13,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
     /// <c>benchmark --past-frames P</c>: at P = 10 every row equals the results recorded before the option
-    /// existed (Tests/Fixtures/tiny-model.benchmark.json, Python's evaluate, to 1e-3) under either policy;
+    /// existed (Tests/Fixtures~/tiny-model.benchmark.json, Python's evaluate, to 1e-3) under either policy;
     /// SLERP and zero-velocity do not change with P or the policy; the model does, and gets P + 1 key
     /// frames (feed) or 11 (repeat). Needs LaFAN1 (skips without it).
     /// </summary>
