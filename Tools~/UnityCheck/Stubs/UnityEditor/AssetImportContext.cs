@@ -7,6 +7,12 @@ namespace UnityEditor.AssetImporters
     {
         public void AddObjectToAsset(string identifier, Object obj) => throw null!;
 
+        public void SetMainObject(Object obj) => throw null!;
+
+        public void LogImportError(string msg, Object obj = null) => throw null!;
+
+        public void LogImportWarning(string msg, Object obj = null) => throw null!;
+
         public string assetPath { get => throw null!; }
     }
 }

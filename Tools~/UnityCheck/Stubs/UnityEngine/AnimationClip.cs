@@ -1,3 +1,5 @@
+using System;
+
 namespace UnityEngine
 {
     // source: unity:Modules/Animation/ScriptBindings/AnimationClip.bindings.cs
@@ -8,6 +10,8 @@ namespace UnityEngine
         public float length => throw null!;
 
         public float frameRate { get => throw null!; set => throw null!; }
+
+        public void SetCurve(string relativePath, Type type, string propertyName, AnimationCurve curve) => throw null!;
 
         public void SampleAnimation(GameObject go, float time) => throw null!;
     }

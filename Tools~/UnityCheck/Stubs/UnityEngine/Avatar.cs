@@ -64,6 +64,8 @@ namespace UnityEngine
     // source: unity:Modules/Animation/ScriptBindings/Avatar.bindings.cs
     public partial class Avatar : Object
     {
+        public bool isValid => throw null!;
+
         public bool isHuman => throw null!;
 
         public HumanDescription humanDescription => throw null!;

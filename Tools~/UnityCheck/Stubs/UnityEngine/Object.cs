@@ -5,6 +5,8 @@ namespace UnityEngine
     {
         public string name { get => throw null!; set => throw null!; }
 
+        public static void DestroyImmediate(Object obj) => throw null!;
+
         public static bool operator ==(Object x, Object y) => throw null!;
 
         public static bool operator !=(Object x, Object y) => throw null!;

@@ -15,6 +15,8 @@ namespace UnityEngine
 
         public Quaternion localRotation { get => throw null!; set => throw null!; }
 
+        public Vector3 localScale { get => throw null!; set => throw null!; }
+
         public int childCount => throw null!;
 
         public Transform GetChild(int index) => throw null!;

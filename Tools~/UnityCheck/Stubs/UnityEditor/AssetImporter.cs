@@ -1,0 +1,7 @@
+namespace UnityEditor
+{
+    // source: unity:Editor/Mono/AssetPipeline/AssetImporter.bindings.cs
+    public partial class AssetImporter : UnityEngine.Object
+    {
+    }
+}

@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Shaders/Material.bindings.cs
+    public partial class Material : Object
+    {
+    }
+}

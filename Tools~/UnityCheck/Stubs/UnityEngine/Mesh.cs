@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Graphics/Mesh.cs
+    public sealed partial class Mesh : Object
+    {
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/BaseClass.cs
+    public enum PrimitiveType
+    {
+        Cube = 3,
+    }
+}
