@@ -11,6 +11,8 @@ namespace UnityEditor
 
         public static T LoadAssetAtPath<T>(string assetPath) where T : Object => throw null!;
 
+        public static Object LoadMainAssetAtPath(string assetPath) => throw null!;
+
         public static void SaveAssets() => throw null!;
 
         public static string GetAssetPath(Object assetObject) => throw null!;

@@ -22,6 +22,8 @@ namespace UnityEngine
 
         public AnimatorUpdateMode updateMode { get => throw null!; set => throw null!; }
 
+        public RuntimeAnimatorController runtimeAnimatorController { get => throw null!; set => throw null!; }
+
         public Transform GetBoneTransform(HumanBodyBones humanBoneId) => throw null!;
     }
 }

@@ -4,5 +4,6 @@ namespace UnityEngine
     public enum PrimitiveType
     {
         Cube = 3,
+        Plane = 4,
     }
 }

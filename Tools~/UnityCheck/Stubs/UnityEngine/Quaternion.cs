@@ -9,5 +9,7 @@ namespace UnityEngine
         public float w;
 
         public Quaternion(float x, float y, float z, float w) => throw null!;
+
+        public static Quaternion Euler(float x, float y, float z) => throw null!;
     }
 }

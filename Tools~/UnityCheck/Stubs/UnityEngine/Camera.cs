@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    // source: unity:Runtime/Export/Camera/Camera.bindings.cs
+    public sealed partial class Camera : Behaviour
+    {
+    }
+}
