@@ -1,7 +1,7 @@
 using System;
 using System.IO;
-using System.Text.Json;
 using System.Text.RegularExpressions;
+using DeltaInterpolator.Core.Json;
 using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.Package
@@ -18,14 +18,14 @@ namespace DeltaInterpolator.Tests.Package
         public void EveryDeclaredSampleExistsWithAReadme()
         {
             string root = Root();
-            using JsonDocument package = JsonDocument.Parse(File.ReadAllText(Path.Combine(root, "package.json")));
+            JsonValue package = JsonValue.Parse(File.ReadAllText(Path.Combine(root, "package.json")), "package.json");
             int count = 0;
-            foreach (JsonElement sample in package.RootElement.GetProperty("samples").EnumerateArray())
+            foreach (JsonValue sample in package.ExpectMember("samples").ExpectArray("samples"))
             {
-                string path = sample.GetProperty("path").GetString()!;
+                string path = sample.ExpectMember("path").ExpectString("path");
                 Assert.That(path, Does.StartWith("Samples~/"), "samples live where Unity does not import them");
                 Assert.That(File.Exists(Path.Combine(root, path, "README.md")), Is.True, path + "/README.md");
-                Assert.That(sample.GetProperty("displayName").GetString(), Is.Not.Empty);
+                Assert.That(sample.ExpectMember("displayName").ExpectString("displayName"), Is.Not.Empty);
                 count++;
             }
 
