@@ -8,9 +8,9 @@ namespace DeltaInterpolator.Evaluation.Speed
     /// <summary>
     /// The characters of the crowd benchmark on one decoder, stepped on a simulated 60 fps clock: each plays
     /// its own animation (every joint swinging about its own axis, the root walking) and all of them request
-    /// a transition in the same rendered frame.
+    /// a transition in the same rendered frame. Public for the BenchmarkDotNet crowd benchmark (Tools~/Benchmarks).
     /// </summary>
-    internal sealed class Crowd
+    public sealed class Crowd
     {
         /// <summary>Rendered frames per second of the simulated clock.</summary>
         public const double Fps = 60;
@@ -21,6 +21,7 @@ namespace DeltaInterpolator.Evaluation.Speed
         private int _frame;
         private int _round;
 
+        /// <summary>Creates <paramref name="characters"/> players on <paramref name="decoder"/> (a quarter with 4 past keys).</summary>
         public Crowd(TransitionDecoder decoder, int characters)
         {
             ModelContract c = decoder.Contract;
@@ -38,6 +39,7 @@ namespace DeltaInterpolator.Evaluation.Speed
             }
         }
 
+        /// <summary>One player per character.</summary>
         public List<TransitionPlayer> Players { get; } = new List<TransitionPlayer>();
 
         /// <summary>Seconds on the simulated clock.</summary>
@@ -57,8 +59,10 @@ namespace DeltaInterpolator.Evaluation.Speed
             }
         }
 
+        /// <summary>Half a second of the characters' own animation, so every history is full.</summary>
         public void Warm() => PlayFor(0.5);
 
+        /// <summary>Steps rendered frames for <paramref name="seconds"/> of the simulated clock.</summary>
         public void PlayFor(double seconds)
         {
             double end = Time + seconds;
