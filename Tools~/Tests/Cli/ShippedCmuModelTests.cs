@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Tests.Cli
     /// <summary>
     /// What the default model promises (Documentation~/model-card.md), measured through the tool a user runs:
     /// ahead of SLERP on the demo's held-out clip, and over every held-out file at keys every 15 and 30 model
-    /// frames. (Measured 2026-12-02 with the chained second stage: 0.828 / 0.831 and 0.917 / 0.927 × SLERP in
+    /// frames. (Measured 2026-12-02 with the longer chained third stage: 0.829 / 0.836 and 0.913 / 0.928 × SLERP in
     /// position ÷ leg and L2Q; the goals, 0.80 / 0.85 and 0.85 / 0.90, are not all reached yet: the model
     /// card says so.)
     /// </summary>
