@@ -5,6 +5,7 @@ using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Skeletons;
 using UnityEditor;
+using DeltaInterpolator.Editor.Humanoid;
 using UnityEngine;
 
 namespace DeltaInterpolator.Editor.Baking
@@ -95,10 +96,7 @@ namespace DeltaInterpolator.Editor.Baking
         public static IReadOnlyList<ClipCurve> HumanoidClipCurves(Animator animator, CharacterRig rig, Transform[] bones, MotionClip motion)
         {
             int frames = motion.FrameCount;
-            string[] muscleNames = HumanTrait.MuscleName;
-            var bodyPositions = new float[3 * frames];
-            var bodyRotations = new float[4 * frames];
-            var muscles = new float[muscleNames.Length * frames];
+            var recording = new HumanPoseRecording(frames);
             var savedPositions = new Vector3[bones.Length];
             var savedRotations = new Quaternion[bones.Length];
             for (int b = 0; b < bones.Length; b++)
@@ -123,14 +121,7 @@ namespace DeltaInterpolator.Editor.Baking
 
                     bones[0].localPosition = new Vector3((float)root[0], (float)root[1], (float)root[2]);
                     handler.GetHumanPose(ref pose);
-                    bodyPositions[3 * f] = pose.bodyPosition.x;
-                    bodyPositions[3 * f + 1] = pose.bodyPosition.y;
-                    bodyPositions[3 * f + 2] = pose.bodyPosition.z;
-                    bodyRotations[4 * f] = pose.bodyRotation.x;
-                    bodyRotations[4 * f + 1] = pose.bodyRotation.y;
-                    bodyRotations[4 * f + 2] = pose.bodyRotation.z;
-                    bodyRotations[4 * f + 3] = pose.bodyRotation.w;
-                    Array.Copy(pose.muscles, 0, muscles, f * muscleNames.Length, muscleNames.Length);
+                    recording.Record(f, pose);
                 }
             }
             finally
@@ -143,7 +134,7 @@ namespace DeltaInterpolator.Editor.Baking
                 }
             }
 
-            return HumanoidCurves.Build(muscleNames, motion.FrameTime, bodyPositions, bodyRotations, muscles);
+            return recording.Curves(motion.FrameTime);
         }
 
         private static void Read(Transform[] bones, double[] root, double[] rotations)

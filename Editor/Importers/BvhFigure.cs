@@ -4,6 +4,7 @@ using System.Collections.Generic;
 using DeltaInterpolator.Core.BvhImport;
 using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Editor.Humanoid;
 using UnityEngine;
 
 namespace DeltaInterpolator.Editor.Importers
@@ -118,10 +119,7 @@ namespace DeltaInterpolator.Editor.Importers
         {
             int frames = import.FrameCount;
             int n = joints.Length;
-            string[] muscleNames = HumanTrait.MuscleName;
-            var bodyPositions = new float[3 * frames];
-            var bodyRotations = new float[4 * frames];
-            var muscles = new float[muscleNames.Length * frames];
+            var recording = new HumanPoseRecording(frames);
             var pose = new HumanPose();
             var handler = new HumanPoseHandler(avatar, root.transform);
             try
@@ -137,14 +135,7 @@ namespace DeltaInterpolator.Editor.Importers
                     }
 
                     handler.GetHumanPose(ref pose);
-                    bodyPositions[3 * f] = pose.bodyPosition.x;
-                    bodyPositions[3 * f + 1] = pose.bodyPosition.y;
-                    bodyPositions[3 * f + 2] = pose.bodyPosition.z;
-                    bodyRotations[4 * f] = pose.bodyRotation.x;
-                    bodyRotations[4 * f + 1] = pose.bodyRotation.y;
-                    bodyRotations[4 * f + 2] = pose.bodyRotation.z;
-                    bodyRotations[4 * f + 3] = pose.bodyRotation.w;
-                    Array.Copy(pose.muscles, 0, muscles, f * muscleNames.Length, muscleNames.Length);
+                    recording.Record(f, pose);
                 }
             }
             finally
@@ -158,7 +149,7 @@ namespace DeltaInterpolator.Editor.Importers
                 }
             }
 
-            return HumanoidCurves.Build(muscleNames, 1.0 / import.FrameRate, bodyPositions, bodyRotations, muscles);
+            return recording.Curves(1.0 / import.FrameRate);
         }
 
         private static AnimationCurve ToUnity(ClipCurve c)
