@@ -1,4 +1,5 @@
 using System;
+using System.Diagnostics;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
@@ -88,6 +89,26 @@ namespace DeltaInterpolator.Core.Playback
         /// </summary>
         /// <returns>Tokens scheduled by this pump.</returns>
         public int Pump(int tokenBudget, int framesPerJob = 1)
+        {
+            long start = Stopwatch.GetTimestamp();
+            try
+            {
+                return PumpRound(tokenBudget, framesPerJob);
+            }
+            finally
+            {
+                PumpTicks += Stopwatch.GetTimestamp() - start;
+            }
+        }
+
+        /// <summary>
+        /// <see cref="Stopwatch"/> ticks spent in <see cref="Pump"/> so far: gathering inputs, running the graphs and
+        /// scattering the results — the decoding work itself, without the players' per-frame playback (for benchmarks;
+        /// written by the thread that pumps).
+        /// </summary>
+        public long PumpTicks { get; private set; }
+
+        private int PumpRound(int tokenBudget, int framesPerJob)
         {
             int spent = 0;
             Retire();

@@ -21,10 +21,16 @@ namespace DeltaInterpolator.Evaluation.Speed
         /// <summary>Wall time until every character has all of its model frames (ms, 3 decimals).</summary>
         public double AllFramesMs { get; internal set; }
 
-        /// <summary>Inference per rendered frame while all play, batched (ms, 4 decimals).</summary>
+        /// <summary>Inference per rendered frame while all play, batched: the decoder's gathering, graph runs and scattering (ms, 4 decimals).</summary>
         public double FrameMsBatched { get; internal set; }
 
         /// <summary>Inference per rendered frame while all play, one run per character (ms, 4 decimals).</summary>
         public double FrameMsUnbatched { get; internal set; }
+
+        /// <summary>The whole rendered frame while all play, batched: inference and every player's playback (ms, 4 decimals).</summary>
+        public double StepMsBatched { get; internal set; }
+
+        /// <summary>The whole rendered frame while all play, one run per character (ms, 4 decimals).</summary>
+        public double StepMsUnbatched { get; internal set; }
     }
 }

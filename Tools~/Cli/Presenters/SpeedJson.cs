@@ -94,6 +94,8 @@ namespace DeltaInterpolator.Cli.Presenters
             ["all_frames_ms"] = crowd.AllFramesMs,
             ["frame_ms_batched"] = crowd.FrameMsBatched,
             ["frame_ms_unbatched"] = crowd.FrameMsUnbatched,
+            ["step_ms_batched"] = crowd.StepMsBatched,
+            ["step_ms_unbatched"] = crowd.StepMsUnbatched,
         };
 
         /// <summary>A length as a JSON key ("5", "15", "30").</summary>

@@ -37,6 +37,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(crowd.AllFramesMs, Is.GreaterThanOrEqualTo(crowd.AllFirstFramesMs));
             Assert.That(crowd.FrameMsBatched, Is.GreaterThan(0));
             Assert.That(crowd.FrameMsUnbatched, Is.GreaterThan(0));
+            // Inference is part of the rendered frame, which also holds every player's playback.
+            Assert.That(crowd.StepMsBatched, Is.GreaterThanOrEqualTo(crowd.FrameMsBatched));
+            Assert.That(crowd.StepMsUnbatched, Is.GreaterThanOrEqualTo(crowd.FrameMsUnbatched));
             Assert.That(crowd.FrozenFrames, Is.GreaterThanOrEqualTo(0));
         }
 
