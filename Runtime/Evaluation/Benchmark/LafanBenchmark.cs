@@ -142,6 +142,8 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                     WindowNormalization.CenterXZ(root, window);
                     WindowNormalization.FaceAxis(root, rotations, window, jointCount, past - 1, options.LocalForwardAxis, options.TargetAxis);
 
+                    // The last past key is the same frame for every length: its foot joints once per window.
+                    if (feet != null) KeyFeet(skeleton, root, rotations, past - 1, jointCount, footJoints, keyPositions, keyRotations, truthFeet, 0);
                     for (int l = 0; l < lengths.Count; l++)
                     {
                         int n = lengths[l];
@@ -155,7 +157,6 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                         if (feet != null)
                         {
                             // The keys around the gap are the truth's in every method's result too.
-                            KeyFeet(skeleton, root, rotations, past - 1, jointCount, footJoints, keyPositions, keyRotations, truthFeet, 0);
                             KeyFeet(skeleton, root, rotations, past + n, jointCount, footJoints, keyPositions, keyRotations, truthFeet, n + 1);
                             CopyFeet(tp, n, jointCount, footJoints, truthFeet);
                             truthFeet.AsSpan(0, footCount * 3).CopyTo(resultFeet);

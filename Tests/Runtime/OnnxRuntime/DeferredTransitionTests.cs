@@ -162,13 +162,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             public double Time { get; private set; } = -1.0 / Fps;
 
-            public (double[] Root, double[] Rotations) ClipPose(double time)
-            {
-                var root = new double[3];
-                var rotations = new double[4 * _clip.BoneCount];
-                _clip.Sample(time, root, rotations);
-                return (root, rotations);
-            }
+            public (double[] Root, double[] Rotations) ClipPose(double time) => _clip.Pose(time);
 
             public void Step()
             {

@@ -36,6 +36,15 @@ namespace DeltaInterpolator.Tests.Playback
 
         public int BoneCount => _axes.Length;
 
+        /// <summary>The pose at <paramref name="time"/> seconds, in new arrays (root 3 values, bones × 4 rotation values).</summary>
+        public (double[] Root, double[] Rotations) Pose(double time)
+        {
+            var root = new double[3];
+            var rotations = new double[4 * BoneCount];
+            Sample(time, root, rotations);
+            return (root, rotations);
+        }
+
         /// <summary>The pose at <paramref name="time"/> seconds.</summary>
         public void Sample(double time, double[] root, double[] rotations)
         {

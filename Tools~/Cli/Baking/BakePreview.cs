@@ -37,11 +37,12 @@ namespace DeltaInterpolator.Cli.Baking
         private static void MarkPlantedFeet(PreviewScene scene, MotionClip[] clips, FootRig feet)
         {
             IReadOnlyList<int> joints = feet.FootJoints;
-            double ground = FootSkating.GroundLevel(FootSkating.FootPositions(clips[0], 0, clips[0].FrameCount, joints), joints.Count);
+            var positions = new double[clips.Length][];
+            for (int t = 0; t < clips.Length; t++) positions[t] = FootSkating.FootPositions(clips[t], 0, clips[t].FrameCount, joints);
+            double ground = FootSkating.GroundLevel(positions[0], joints.Count);
             for (int t = 0; t < clips.Length; t++)
             {
-                double[] positions = FootSkating.FootPositions(clips[t], 0, clips[t].FrameCount, joints);
-                scene.Tracks[t].MarkPlantedFeet(joints, FootSkating.Planted(positions, joints.Count, clips[t].FrameTime, ground, feet.LegLength));
+                scene.Tracks[t].MarkPlantedFeet(joints, FootSkating.Planted(positions[t], joints.Count, clips[t].FrameTime, ground, feet.LegLength));
             }
         }
 

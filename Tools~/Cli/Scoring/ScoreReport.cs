@@ -33,6 +33,15 @@ namespace DeltaInterpolator.Cli.Scoring
                     w.WriteEndObject();
                 }
 
+                // A group's or the whole sheet's sums: frames, planted samples, the truth's skating, each method.
+                void Totals(ScoreTotal t)
+                {
+                    w.WriteNumber("non_key_frames", t.Frames);
+                    w.WriteNumber("foot_contact_samples", t.ContactSamples);
+                    Skating("ground_truth_foot_skating", t.TruthFootSkating, t.ContactSamples);
+                    Methods("methods", t.PositionPerLeg, t.L2Q, t.FootSkating, t.ContactSamples);
+                }
+
                 void Skating(string key, double value, int contacts)
                 {
                     if (contacts > 0 && double.IsFinite(value)) w.WriteNumber(key, value);
@@ -62,12 +71,8 @@ namespace DeltaInterpolator.Cli.Scoring
                 w.WriteStartObject("groups");
                 foreach (var g in sheet.Groups())
                 {
-                    ScoreTotal t = sheet.Total(g.Value);
                     w.WriteStartObject(g.Key.Length == 0 ? "-" : g.Key);
-                    w.WriteNumber("non_key_frames", t.Frames);
-                    w.WriteNumber("foot_contact_samples", t.ContactSamples);
-                    Skating("ground_truth_foot_skating", t.TruthFootSkating, t.ContactSamples);
-                    Methods("methods", t.PositionPerLeg, t.L2Q, t.FootSkating, t.ContactSamples);
+                    Totals(sheet.Total(g.Value));
                     w.WriteEndObject();
                 }
 
@@ -75,10 +80,7 @@ namespace DeltaInterpolator.Cli.Scoring
                 ScoreTotal all = sheet.Total();
                 w.WriteStartObject("total");
                 w.WriteNumber("files", sheet.Rows.Count);
-                w.WriteNumber("non_key_frames", all.Frames);
-                w.WriteNumber("foot_contact_samples", all.ContactSamples);
-                Skating("ground_truth_foot_skating", all.TruthFootSkating, all.ContactSamples);
-                Methods("methods", all.PositionPerLeg, all.L2Q, all.FootSkating, all.ContactSamples);
+                Totals(all);
                 w.WriteEndObject();
                 w.WriteEndObject();
             }
