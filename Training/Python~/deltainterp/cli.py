@@ -160,6 +160,9 @@ def _train(sub) -> None:
                         "bake feeds them; default 0)")
     p.add_argument("--init-from", default="",
                    help="start a new run from these weights (an exported .onnx or a checkpoint.pt) instead of random")
+    p.add_argument("--average-from", type=int, default=0,
+                   help="from this step on, the run's weights (checkpoint, validation, export) are the mean of every "
+                        "later step's (stochastic weight averaging; default 0: off)")
     p.add_argument("--threads", type=int, default=1,
                    help="torch intra-op threads (default 1: measured fastest on a 2-core CPU, see model card)")
     p.add_argument("--checkpoint-every", type=int, default=250)
@@ -382,7 +385,7 @@ def main(argv: Optional[List[str]] = None) -> int:
                               max_minutes=args.max_minutes, threads=args.threads, min_past=args.min_past,
                               longest_past_share=args.longest_past_share, uniform_past=args.uniform_past,
                               init_from=args.init_from, min_gap=args.min_gap, max_gap=args.max_gap,
-                              chained_share=args.chained_share)
+                              chained_share=args.chained_share, average_from=args.average_from)
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0

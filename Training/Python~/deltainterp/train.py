@@ -2,6 +2,7 @@
 CPU / GPU / torchrun (DistributedDataParallel, gloo or nccl)."""
 from __future__ import annotations
 
+import copy
 import csv
 import io
 import json
@@ -11,7 +12,7 @@ import random
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 import torch
@@ -54,6 +55,7 @@ class TrainConfig:
     max_gap: int = 39           # longer gaps need longer windows: see WindowSource
     chained_share: float = 0.0  # share of batches whose past frames are the network's own output (draw_chained)
     init_from: str = ""         # start from these weights (an exported .onnx or a checkpoint.pt), not random
+    average_from: int = 0       # 0 = off; else the run's weights are the mean of every step's after this one
 
 
 def learning_rate(cfg: TrainConfig, step: int) -> float:
@@ -217,7 +219,7 @@ RESUME_SETTINGS = {"batch_size": "--batch-size", "peak_lr": "--lr", "warmup_step
                    "unit_scale": "unit_scale", "mirror": "--mirror", "random_yaw": "--random-yaw",
                    "min_past": "--min-past", "longest_past_share": "--longest-past-share",
                    "uniform_past": "--uniform-past", "min_gap": "--min-gap", "max_gap": "--max-gap",
-                   "chained_share": "--chained-share"}
+                   "chained_share": "--chained-share", "average_from": "--average-from"}
 
 
 def run_checkpoint(out: Path) -> Optional[Path]:
@@ -278,6 +280,26 @@ def trim_run_logs(out: Path, step: int) -> int:
 
 def _distributed() -> bool:
     return int(os.environ.get("WORLD_SIZE", "1")) > 1
+
+
+def average_weights(averaged: Optional[DeltaInterpolator], count: int,
+                    model: DeltaInterpolator) -> Tuple[DeltaInterpolator, int]:
+    """One more step into the running mean of the weights (stochastic weight averaging, Izmailov et al.
+    2018): the mean of the late steps' weights lies in a flatter part of the loss than any one of them and
+    usually generalizes a little better. Buffers are copied, floating parameters averaged."""
+    if averaged is None:
+        averaged = copy.deepcopy(model)
+        averaged.eval()
+        return averaged, 1
+    count += 1
+    with torch.no_grad():
+        live = model.state_dict()
+        for name, value in averaged.state_dict().items():
+            if value.is_floating_point():
+                value.add_(live[name] - value, alpha=1.0 / count)
+            else:
+                value.copy_(live[name])
+    return averaged, count
 
 
 def train(cfg: TrainConfig, progress: bool = True) -> Path:
@@ -344,10 +366,20 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     optimizer = torch.optim.Adam(model.parameters(), lr=learning_rate(cfg, 0))
     rng = np.random.default_rng([cfg.seed, rank])
     step = 0
+    if cfg.average_from < 0:
+        raise ValueError(f"--average-from {cfg.average_from}; expected a step ≥ 0 (0: no averaging)")
+    averaged: Optional[DeltaInterpolator] = None  # the running mean of the weights after --average-from
+    averaged_count = 0
     if state is not None:
         # read_checkpoint loaded it without running code from it (weights-only; RNG states as plain values)
         try:
-            model.load_state_dict(state["model"])
+            # With averaging, "model" holds the average (what export and evaluation read) and
+            # "live_model" the weights the optimizer is moving.
+            model.load_state_dict(state.get("live_model", state["model"]))
+            if "live_model" in state:
+                averaged = copy.deepcopy(model)
+                averaged.load_state_dict(state["model"])
+                averaged_count = int(state["averaged_count"])
             optimizer.load_state_dict(state["optimizer"])
             step = int(state["step"])
             if rank < len(state["rng"]):
@@ -406,10 +438,12 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             dist.all_gather_object(rngs, rng.bit_generator.state)
         if rank != 0:
             return
-        state = {"model": model.state_dict(), "optimizer": optimizer.state_dict(), "step": step,
+        state = {"model": (averaged or model).state_dict(), "optimizer": optimizer.state_dict(), "step": step,
                  "rng": rngs, "torch_rng": torch.get_rng_state(), "python_rng": random.getstate(),
                  "model_config": model_cfg.to_dict(), "train_config": asdict(cfg),
                  "skeleton": pack.skeleton.to_json(), "unit_scale": cfg.unit_scale, "validation": last_val}
+        if averaged is not None:
+            state.update(live_model=model.state_dict(), averaged_count=averaged_count)
         save_checkpoint_file(state, ckpt_path)  # format 2 (loads weights-only), temporary file + rename
 
     def time_is_up() -> bool:
@@ -436,6 +470,8 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         terms["total"].backward()
         optimizer.step()
         step += 1
+        if cfg.average_from and step > cfg.average_from:
+            averaged, averaged_count = average_weights(averaged, averaged_count, model)
         window_losses.append({k: float(v) for k, v in terms.items()})
         if not math.isfinite(window_losses[-1]["total"]):
             # Every rank sees it by the next step (the NaN gradients are all-reduced), so none hangs.
@@ -460,12 +496,13 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             safe_output.append_text(log_path, text.getvalue())  # whole file via temp + rename
             window_losses.clear()
         if rank == 0 and len(val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
-            last_val = validation_metrics(model, pack, val_starts, skeleton)
+            shipped = averaged or model  # validate what the checkpoint exports
+            last_val = validation_metrics(shipped, pack, val_starts, skeleton)
             for n, starts in long_val.items():
                 if len(starts) > 0:
-                    last_val.update(validation_metrics(model, pack, starts, skeleton, gaps=(n,)))
+                    last_val.update(validation_metrics(shipped, pack, starts, skeleton, gaps=(n,)))
             for p in VALIDATION_SHORT_PASTS if cfg.min_past < 10 else ():
-                short = validation_metrics(model, pack, val_starts, skeleton, past=p)
+                short = validation_metrics(shipped, pack, val_starts, skeleton, past=p)
                 last_val.update({f"p{p}_{k}": v for k, v in short.items()})
             bad = sorted(k for k, v in last_val.items() if not math.isfinite(v))
             if bad:

@@ -74,6 +74,30 @@ def test_resume_equals_uninterrupted_run(synthetic_pack_path, tmp_path):
     assert straight["rng"] == resumed["rng"]
 
 
+def test_weight_averaging_keeps_the_mean_of_the_late_steps_and_resumes_exactly(synthetic_pack_path, tmp_path):
+    # Three runs of the same seed: 6 steps live, 9 steps averaging after step 6, and the latter stopped at
+    # step 7 and resumed. The averaged checkpoint's "model" is the mean of steps 7-9's live weights.
+    live = {}
+    for steps in (7, 8, 9):
+        live[steps] = read_checkpoint(train(config(synthetic_pack_path, tmp_path / f"live{steps}", steps=steps),
+                                            progress=False))["model"]
+    straight = read_checkpoint(train(config(synthetic_pack_path, tmp_path / "avg", steps=9, average_from=6),
+                                     progress=False))
+    train(config(synthetic_pack_path, tmp_path / "part", steps=7, average_from=6), progress=False)
+    resumed = read_checkpoint(train(config(synthetic_pack_path, tmp_path / "part", steps=9, average_from=6),
+                                    progress=False))
+    assert straight["averaged_count"] == resumed["averaged_count"] == 3
+    for name, w in straight["model"].items():
+        if not w.is_floating_point():
+            continue
+        mean = (live[7][name] + live[8][name] + live[9][name]) / 3
+        assert torch.allclose(w, mean, atol=1e-6), f"{name} is not the mean of steps 7-9"
+        assert torch.equal(straight["live_model"][name], live[9][name]), f"{name}: live weights changed"
+        assert torch.equal(w, resumed["model"][name]), f"{name} differs after resume"
+    assert any(not torch.equal(w, live[9][name]) for name, w in straight["model"].items()), \
+        "the averaged weights equal the last step's: nothing was averaged"
+
+
 def _free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
