@@ -63,6 +63,10 @@ namespace DeltaInterpolator.Unity
         [Tooltip("Past model frames fed to the network; 0 uses the most the model was trained with.")]
         private int pastFrames = 0;
 
+        [SerializeField]
+        [Tooltip("Hold planted feet still during transitions and solve the legs to them (two-bone IK), so feet do not slide.")]
+        private bool lockFeet = true;
+
         /// <summary>The model.</summary>
         public InbetweeningModel? Model => model;
 
@@ -101,6 +105,9 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>Past model frames fed to the network (0: the model's trained maximum).</summary>
         public int PastFrames => pastFrames;
+
+        /// <summary>Whether transitions hold planted feet still (<see cref="Core.Playback.PlaybackSettings.LockFeet"/>).</summary>
+        public bool LockFeet => lockFeet;
 
         /// <summary>Raised when a field is edited (inspector, undo) in the Editor; components using the asset apply the change.</summary>
         internal event Action<InbetweenerSettings>? Changed;

@@ -251,6 +251,7 @@ namespace DeltaInterpolator.Unity
             {
                 _playback.BlendInSeconds = settings.BlendInSeconds;
                 _playback.BlendOutSeconds = settings.BlendOutSeconds;
+                _playback.LockFeet = settings.LockFeet;
             }
         }
 
@@ -337,7 +338,7 @@ namespace DeltaInterpolator.Unity
             RootBone = 0;
             _rootMotion = new RootMotion(rig.Armature) { Enabled = _animator.applyRootMotion };
             // The player reads these at each request and frame, so edited blend times apply without a rebuild.
-            _playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames };
+            _playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames, LockFeet = s.LockFeet };
             _player = new TransitionPlayer(map, _decoder, _playback);
             _built = SettingsSnapshot.Take(s);
             _player.TransitionCompleted += OnCompleted;

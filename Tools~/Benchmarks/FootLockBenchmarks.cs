@@ -9,10 +9,12 @@ using DeltaInterpolator.Core.Skeletons;
 namespace DeltaInterpolator.Benchmarks
 {
     /// <summary>
-    /// The per-frame cost of foot locking (<see cref="FootLocker.LockFrame"/>) for 1, 16 and 64 characters of
-    /// LaFAN1's 22 joints, every character with both feet planted on every frame (the costliest case: FK of
-    /// the frame and two-bone IK of both legs, toe and heel held). Divide by Characters for the per-character
-    /// cost; it must allocate 0 B. Planning (once per transition or bake) is not part of it.
+    /// The per-frame cost of foot locking for 1, 16 and 64 characters of LaFAN1's 22 joints, every character with
+    /// both feet planted on every frame (the costliest case: FK of the frame and two-bone IK of both legs, toe and
+    /// heel held): <see cref="Frame"/> is a bake's (<see cref="FootLocker.LockFrame"/>; planning, once per bake, not
+    /// part of it), <see cref="PlaybackFrame"/> the component's (<see cref="LiveFootLocker.LockPose"/>: contact
+    /// labels, FK and IK of the pose shown; a new transition every 58 frames included). Divide by Characters for the
+    /// per-character cost; both must allocate 0 B.
     /// <code>dotnet run -c Release --project Tools~/Benchmarks -- --filter '*FootLockBenchmarks*'</code>
     /// </summary>
     [MemoryDiagnoser]
@@ -20,6 +22,7 @@ namespace DeltaInterpolator.Benchmarks
     {
         private const int Frames = 60;
         private FootLocker[] _lockers = null!;
+        private LiveFootLocker[] _live = null!;
         private MotionClip[] _clips = null!;
         private double[][] _rotations = null!;
         private int _frame;
@@ -51,6 +54,7 @@ namespace DeltaInterpolator.Benchmarks
             var gp = new double[3 * j];
             var gr = new double[4 * j];
             _lockers = new FootLocker[Characters];
+            _live = new LiveFootLocker[Characters];
             _clips = new MotionClip[Characters];
             _rotations = new double[Characters][];
             for (int c = 0; c < Characters; c++)
@@ -84,7 +88,22 @@ namespace DeltaInterpolator.Benchmarks
                 _lockers[c] = new FootLocker(rig);
                 _lockers[c].Plan(_clips[c], new[] { 0, Frames - 1 });
                 _rotations[c] = new double[4 * j];
+                _live[c] = new LiveFootLocker(rig, FootLockSettings.ForPlayback());
             }
+
+            BeginTransitions();
+            for (int f = 1; f < Frames - 1; f++)
+            {
+                MotionClip clip = _clips[0];
+                Array.Copy(clip.LocalRotations, f * j * 4, _rotations[0], 0, 4 * j);
+                _live[0].LockPose(f / 30.0, clip.LocalPositions.AsSpan(f * j * 3, 3), _rotations[0]);
+                for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
+                {
+                    if (_live[0].LockWeight(channel) <= 0) throw new InvalidOperationException($"playback frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
+                }
+            }
+
+            BeginTransitions();
 
             for (int f = 1; f < Frames - 1; f++)
             {
@@ -92,6 +111,32 @@ namespace DeltaInterpolator.Benchmarks
                 {
                     if (_lockers[0].LockWeight(f, channel) <= 0) throw new InvalidOperationException($"frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
                 }
+            }
+        }
+
+        /// <summary>One rendered frame of every character playing a transition: the pose shown locked as it is shown (the clip's own pose copied in first).</summary>
+        [Benchmark]
+        public void PlaybackFrame()
+        {
+            _frame = _frame % (Frames - 2) + 1;
+            if (_frame == 1) BeginTransitions();
+            for (int c = 0; c < _live.Length; c++)
+            {
+                MotionClip clip = _clips[c];
+                int j = clip.Skeleton.JointCount;
+                double[] pose = _rotations[c];
+                Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
+                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose);
+            }
+        }
+
+        private void BeginTransitions()
+        {
+            for (int c = 0; c < _live.Length; c++)
+            {
+                MotionClip clip = _clips[c];
+                int j = clip.Skeleton.JointCount, last = Frames - 1;
+                _live[c].Begin(clip.LocalPositions.AsSpan(0, 3), clip.LocalRotations.AsSpan(0, 4 * j), clip.LocalPositions.AsSpan(last * j * 3, 3), clip.LocalRotations.AsSpan(last * j * 4, 4 * j), 0, last / 30.0);
             }
         }
 

@@ -77,6 +77,13 @@ namespace DeltaInterpolator.Core.Feet
         /// </summary>
         public static FootLockSettings ForInterpolation() => new FootLockSettings { HoldSpeed = double.PositiveInfinity, EaseReach = 0 };
 
+        /// <summary>
+        /// Settings for transitions as they play (<see cref="LiveFootLocker"/>): a network's stance feet sink, rise and
+        /// slide a little more than a bake's keys let them, and nothing later is known when a contact starts, so a foot
+        /// is taken as planted a little higher and faster than in a bake.
+        /// </summary>
+        public static FootLockSettings ForPlayback() => new FootLockSettings { EnterHeight = 0.03, ExitHeight = 0.06, EnterSpeed = 0.75, ExitSpeed = 1.25 };
+
         /// <summary>Throws when a value is out of range; called by <see cref="FootLocker"/>.</summary>
         /// <exception cref="ArgumentOutOfRangeException">A threshold is negative, an exit threshold is below its entry, or the reach is not in (0, 1].</exception>
         public void Validate()

@@ -38,12 +38,8 @@ namespace DeltaInterpolator.Core.Feet
     /// stretches it) is dropped: the foot is released, not stretched. Weights ease from 0 to 1 over
     /// <see cref="FootLockSettings.EaseSeconds"/> before a contact and back after it, never across a key, and
     /// fade where the filled joint is far from the target (<see cref="FootLockSettings.EaseReach"/>).</para>
-    /// <para><b>Solving a leg.</b> Heel (ankle) held: the ankle goes to its target, the foot keeps its global
-    /// orientation. Toe held, heel free (a rolling foot): the foot keeps its orientation and is carried so that
-    /// the toe lands on its target. Both held: the foot lies on the line from the heel's to the toe's target, the
-    /// more held of the two exact (the toe on a tie). Then analytic two-bone IK (<see cref="TwoBoneIk"/>) with the
-    /// knee in the leg's plane; only the thigh, knee and foot rotations of non-key frames change, so a rig whose
-    /// toe was synthesized (rigid to the foot) is handled the same way.</para>
+    /// <para><b>Solving a leg</b>: <see cref="LegPinning"/> (shared with the run-time <see cref="LiveFootLocker"/>);
+    /// only the thigh, knee and foot rotations of non-key frames change.</para>
     /// <para>Buffers grow to the longest clip seen and are reused; <see cref="LockFrame"/> allocates nothing.
     /// Not thread-safe.</para>
     /// </remarks>
@@ -60,6 +56,9 @@ namespace DeltaInterpolator.Core.Feet
         private readonly double[] _maxPlantedHeight = new double[ChannelCount];
         private readonly double[] _plantedHeight = new double[ChannelCount];
         private readonly double[] _thigh = new double[2];
+        private readonly LegPinning _pinning;
+        private readonly double[] _frameWeights = new double[ChannelCount];
+        private readonly double[] _frameTargets = new double[3 * ChannelCount];
         private readonly double[] _shin = new double[2];
 
         private IReadOnlyList<int>? _keys;
@@ -100,6 +99,7 @@ namespace DeltaInterpolator.Core.Feet
 
             _globalPositions = new double[3 * s.JointCount];
             _globalRotations = new double[4 * s.JointCount];
+            _pinning = new LegPinning(rig);
             StandingHeights(rig, _maxPlantedHeight);
         }
 
@@ -220,74 +220,14 @@ namespace DeltaInterpolator.Core.Feet
             for (int c = 0; c < ChannelCount; c++) any |= _weight[c * cap + frame] > 0;
             if (!any) return;
 
-            Skeleton s = _rig.Skeleton;
-            ForwardKinematics.ComputeFrame(s.ParentSpan, localPositions, Vector3D.Read(localPositions, 0), localRotations, _globalPositions, _globalRotations);
-            for (int side = 0; side < 2; side++)
+            for (int c = 0; c < ChannelCount; c++)
             {
-                double wa = _weight[(2 * side) * cap + frame];
-                double wt = _weight[(2 * side + 1) * cap + frame];
-                if (wa <= 0 && wt <= 0) continue;
-                Leg leg = _rig[side];
-                Vector3D ankle = Vector3D.Read(_globalPositions, 3 * leg.Ankle);
-                QuaternionD foot = QuaternionD.Read(_globalRotations, 4 * leg.Ankle);
-                Vector3D toeVector = leg.HasToe ? Vector3D.Read(_globalPositions, 3 * leg.Toe) - ankle : Vector3D.Zero;
-                // Heel: the ankle towards its target, the foot's orientation kept (the toe carried along).
-                Vector3D heel = wa > 0 ? Lerp(ankle, Vector3D.Read(_anchor, ((2 * side) * cap + frame) * 3), wa) : ankle;
-                Vector3D target = heel;
-                QuaternionD footWanted = foot;
-                if (wt > 0)
-                {
-                    // Toe: a rolling foot (heel free) keeps its orientation and is carried so that the toe lands on its
-                    // target; with the heel planted too the foot lies along the line from heel to toe target, the ankle
-                    // on it at the foot's length from the toe (the more held of the two joints is the one that is exact).
-                    double length = toeVector.Length;
-                    Vector3D toeGoal = Lerp(heel + toeVector, Vector3D.Read(_anchor, ((2 * side + 1) * cap + frame) * 3), wt);
-                    Vector3D carried = toeGoal - toeVector;
-                    Vector3D along = toeGoal - heel;
-                    double span = along.Length;
-                    if (wa > 0 && span > 1e-9 * length)
-                    {
-                        Vector3D unit = (1.0 / span) * along;
-                        Vector3D heelExact = heel, toeExact = toeGoal - length * unit;
-                        // The more held joint is exact (the toe on a tie): the other lies on the line, a foot's length away.
-                        Vector3D flat = wt >= wa ? toeExact : heelExact;
-                        target = Lerp(carried, flat, wa);
-                        if (wt >= wa)
-                        {
-                            // Back onto the sphere about the toe's target: the toe stays exact however the heel eases.
-                            Vector3D arm = target - toeGoal;
-                            double armLength = arm.Length;
-                            if (armLength > 1e-9 * length) target = toeGoal + (length / armLength) * arm;
-                        }
-                    }
-                    else
-                    {
-                        target = carried;
-                    }
-
-                    footWanted = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(toeVector, toeGoal - target, Vector3D.UnitY), foot));
-                }
-
-                SolveLeg(leg, target, footWanted, toeVector, localRotations);
+                _frameWeights[c] = _weight[c * cap + frame];
+                Copy(_anchor, (c * cap + frame) * 3, _frameTargets, 3 * c);
             }
-        }
 
-        private void SolveLeg(Leg leg, Vector3D target, QuaternionD footWanted, Vector3D toeVector, Span<double> localRotations)
-        {
-            Skeleton s = _rig.Skeleton;
-            int parent = s.Parents[leg.Hip];
-            Vector3D hip = Vector3D.Read(_globalPositions, 3 * leg.Hip);
-            Vector3D knee = Vector3D.Read(_globalPositions, 3 * leg.Knee);
-            Vector3D ankle = Vector3D.Read(_globalPositions, 3 * leg.Ankle);
-            QuaternionD hipGlobal = QuaternionD.Read(_globalRotations, 4 * leg.Hip);
-            QuaternionD kneeGlobal = QuaternionD.Read(_globalRotations, 4 * leg.Knee);
-            // A straight knee bends towards where the foot points (or, without a toe, the root's forward +Z).
-            Vector3D hint = leg.HasToe ? toeVector : Quaternions.Apply(QuaternionD.Read(_globalRotations, 0), Vector3D.UnitZ);
-            TwoBoneIk.Solve(hip, knee, ankle, hipGlobal, kneeGlobal, target, hint, out QuaternionD newHip, out QuaternionD newKnee);
-            QuaternionD parentGlobal = QuaternionD.Read(_globalRotations, 4 * parent);
-            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(parentGlobal), newHip)).Write(localRotations, 4 * leg.Hip);
-            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newHip), newKnee)).Write(localRotations, 4 * leg.Knee);
-            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newKnee), footWanted)).Write(localRotations, 4 * leg.Ankle);
+            _pinning.ComputeGlobals(localPositions, localRotations);
+            _pinning.Pin(_frameWeights, _frameTargets, localRotations);
         }
 
         private void Reserve(int frames)
@@ -743,7 +683,7 @@ namespace DeltaInterpolator.Core.Feet
         /// when it stands flat-footed, plus 1 % (a toe on the ground, an ankle a few centimetres up), so that a joint the
         /// keys never show on the ground is not planted in the air.
         /// </summary>
-        private static void StandingHeights(FootRig rig, double[] heights)
+        internal static void StandingHeights(FootRig rig, double[] heights)
         {
             // Flat-footed: the ankle above the toe by at most the foot's drop in the model T-pose (30° below forward).
             for (int side = 0; side < 2; side++)
@@ -762,6 +702,6 @@ namespace DeltaInterpolator.Core.Feet
             to[j + 2] = from[i + 2];
         }
 
-        private static Vector3D Lerp(Vector3D a, Vector3D b, double t) => a + t * (b - a);
+        private static Vector3D Lerp(Vector3D a, Vector3D b, double t) => LegPinning.Lerp(a, b, t);
     }
 }

@@ -31,6 +31,13 @@ namespace DeltaInterpolator.Core.Playback
         /// </summary>
         public bool SlerpOnly { get; set; }
 
+        /// <summary>
+        /// Holds planted feet still while a transition plays and solves the legs to them (<see cref="Feet.LiveFootLocker"/>;
+        /// read at each request). On by default, as in bakes; a model whose skeleton lacks the model's leg joints
+        /// (LaFAN1 names) plays unlocked.
+        /// </summary>
+        public bool LockFeet { get; set; } = true;
+
         /// <summary>Past model frames fed to the network (P); 0 takes the largest the model was trained with.</summary>
         public int PastFrames { get; set; }
 

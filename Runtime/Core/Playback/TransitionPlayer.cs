@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Threading;
+using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Rotations;
@@ -52,6 +53,7 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _shownRoot = new double[3];
         private readonly double[] _shownRotations;
         private readonly EaseIn _ease;
+        private readonly LiveFootLocker? _feet;
         private TransitionJob? _job;
         private int _requestId;
         private int _nextId;
@@ -99,6 +101,7 @@ namespace DeltaInterpolator.Core.Playback
             _targetRotations = new double[b * 4];
             _shownRotations = new double[b * 4];
             _ease = new EaseIn(_joints);
+            if (FootRig.HasModelLegs(c.Skeleton)) _feet = new LiveFootLocker(FootRig.ForModel(c.Skeleton), FootLockSettings.ForPlayback());
         }
 
         /// <summary>Reports every request exactly once: when its target pose is shown, or when it is interrupted or cancelled.</summary>
@@ -307,6 +310,12 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             _ease.Begin(t);
+            if (_settings.LockFeet && _feet != null)
+            {
+                _feet.Begin(new ReadOnlySpan<double>(t.KeyRootPositions, 3 * (PastFrames - 1), 3), new ReadOnlySpan<double>(t.KeyLocalRotations, jr * (PastFrames - 1), jr),
+                    new ReadOnlySpan<double>(t.KeyRootPositions, 3 * PastFrames, 3), new ReadOnlySpan<double>(t.KeyLocalRotations, jr * PastFrames, jr), t0, t0 + durationSeconds);
+            }
+
             _neededBefore = 0;
             _job = job;
             _requestId = id;
@@ -405,6 +414,7 @@ namespace DeltaInterpolator.Core.Playback
                 {
                     _reached = true;
                     _reachedAt = time;
+                    _feet?.End();
                     _targetRoot.CopyTo(_poseRoot, 0);
                     _targetRotations.CopyTo(_poseRotations, 0);
                     _pendingCompletion = new TransitionCompletion(_requestId, true, time);
@@ -439,6 +449,8 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             if (_ease.Show(job, a, f, decoded >= need)) HeldFrames++;
+            // Feet after the SLERP → network ease-in, on the pose about to be shown (model space).
+            _feet?.LockPose(time, _ease.Root, _ease.Rotations);
             _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
             double blendIn = Math.Min(_settings.BlendInSeconds, _duration);
             double w = blendIn > 0 ? SmoothStep(Math.Max(0, s) / blendIn) : 1;
@@ -447,6 +459,7 @@ namespace DeltaInterpolator.Core.Playback
 
         private void Interrupt(double time)
         {
+            _feet?.End();
             if (_job != null) _job.Cancel();
             if (_playing && !_reached) _pendingInterruption = new TransitionCompletion(_requestId, false, time);
             _playing = false;

@@ -277,7 +277,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 for (int i = 0; i < characters; i++)
                 {
                     // Past frames mixed the way a game mixes them: most characters with full history, some short.
-                    var s = settings ?? new PlaybackSettings { BlendInSeconds = 0, PastFrames = i % 4 == 3 ? 4 : 0 };
+                    // Feet unlocked: these tests hold shown poses to the request's exact SLERP and network frames
+                    // (locking after the ease-in has tests of its own).
+                    var s = settings ?? new PlaybackSettings { BlendInSeconds = 0, PastFrames = i % 4 == 3 ? 4 : 0, LockFeet = false };
                     Players.Add(new TransitionPlayer(Map, decoder, s));
                     _clips.Add(new SyntheticClip(c.JointCount, seed * 1000 + i));
                     _streams[i] = new ArrayPoseStream(new double[3], new double[4 * c.JointCount]);

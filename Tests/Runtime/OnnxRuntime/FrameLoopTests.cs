@@ -235,7 +235,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 names.Reverse();
                 _map = new NameJointMap(c.Skeleton, c.UnitScale, names);
                 _clip = new SyntheticClip(names.Count, seed);
-                Player = new TransitionPlayer(_map, _decoder, new PlaybackSettings { BlendInSeconds = BlendIn, BlendOutSeconds = BlendOut });
+                Player = new TransitionPlayer(_map, _decoder, new PlaybackSettings { BlendInSeconds = BlendIn, BlendOutSeconds = BlendOut, LockFeet = false });
                 Player.TransitionCompleted += e => Completions.Add(e);
                 _stream = new ArrayPoseStream(new double[3], new double[4 * names.Count]);
                 Shown = new ArrayPoseStream(new double[3], new double[4 * names.Count]);

@@ -1,0 +1,120 @@
+using System;
+using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+
+namespace DeltaInterpolator.Core.Feet
+{
+    /// <summary>
+    /// Moves the legs of one pose so that its held foot joints reach their targets: the solve that both the
+    /// clip locker (<see cref="FootLocker"/>, bakes) and the run-time locker (<see cref="LiveFootLocker"/>, the
+    /// component) apply, given each foot joint's weight (0 free … 1 held) and target.
+    /// </summary>
+    /// <remarks>
+    /// Heel (ankle) held: the ankle goes to its target, the foot keeps its global orientation. Toe held, heel
+    /// free (a rolling foot): the foot keeps its orientation and is carried so that the toe lands on its target.
+    /// Both held: the foot lies on the line from the heel's to the toe's target, the more held of the two exact
+    /// (the toe on a tie). Then analytic two-bone IK (<see cref="TwoBoneIk"/>) with the knee in the leg's plane;
+    /// only the thigh, knee and foot rotations change, so a rig whose toe was synthesized (rigid to the foot) is
+    /// handled the same way. Allocation-free; not thread-safe.
+    /// </remarks>
+    internal sealed class LegPinning
+    {
+        private readonly FootRig _rig;
+        private readonly double[] _globalPositions;
+        private readonly double[] _globalRotations;
+
+        public LegPinning(FootRig rig)
+        {
+            _rig = rig;
+            _globalPositions = new double[3 * rig.Skeleton.JointCount];
+            _globalRotations = new double[4 * rig.Skeleton.JointCount];
+        }
+
+        /// <summary>Global joint positions of the pose given to <see cref="ComputeGlobals"/> (joints × 3).</summary>
+        public double[] GlobalPositions => _globalPositions;
+
+        /// <summary>Forward kinematics of one pose (local translations with the root's position first, local rotations).</summary>
+        public void ComputeGlobals(ReadOnlySpan<double> localPositions, ReadOnlySpan<double> localRotations)
+        {
+            ForwardKinematics.ComputeFrame(_rig.Skeleton.ParentSpan, localPositions, Vector3D.Read(localPositions, 0), localRotations, _globalPositions, _globalRotations);
+        }
+
+        /// <summary>
+        /// After <see cref="ComputeGlobals"/> of the same pose: pins its foot joints. <paramref name="weights"/> holds
+        /// one weight per channel (left ankle, left toe, right ankle, right toe), <paramref name="targets"/> their
+        /// targets (channels × 3); a leg whose two weights are 0 is left alone.
+        /// </summary>
+        public void Pin(ReadOnlySpan<double> weights, ReadOnlySpan<double> targets, Span<double> localRotations)
+        {
+            for (int side = 0; side < 2; side++)
+            {
+                double wa = weights[2 * side];
+                double wt = weights[2 * side + 1];
+                if (wa <= 0 && wt <= 0) continue;
+                Leg leg = _rig[side];
+                Vector3D ankle = Vector3D.Read(_globalPositions, 3 * leg.Ankle);
+                QuaternionD foot = QuaternionD.Read(_globalRotations, 4 * leg.Ankle);
+                Vector3D toeVector = leg.HasToe ? Vector3D.Read(_globalPositions, 3 * leg.Toe) - ankle : Vector3D.Zero;
+                // Heel: the ankle towards its target, the foot's orientation kept (the toe carried along).
+                Vector3D heel = wa > 0 ? Lerp(ankle, Vector3D.Read(targets, 3 * (2 * side)), wa) : ankle;
+                Vector3D target = heel;
+                QuaternionD footWanted = foot;
+                if (wt > 0)
+                {
+                    // Toe: a rolling foot (heel free) keeps its orientation and is carried so that the toe lands on its
+                    // target; with the heel planted too the foot lies along the line from heel to toe target, the ankle
+                    // on it at the foot's length from the toe (the more held of the two joints is the one that is exact).
+                    double length = toeVector.Length;
+                    Vector3D toeGoal = Lerp(heel + toeVector, Vector3D.Read(targets, 3 * (2 * side + 1)), wt);
+                    Vector3D carried = toeGoal - toeVector;
+                    Vector3D along = toeGoal - heel;
+                    double span = along.Length;
+                    if (wa > 0 && span > 1e-9 * length)
+                    {
+                        Vector3D unit = (1.0 / span) * along;
+                        Vector3D heelExact = heel, toeExact = toeGoal - length * unit;
+                        // The more held joint is exact (the toe on a tie): the other lies on the line, a foot's length away.
+                        Vector3D flat = wt >= wa ? toeExact : heelExact;
+                        target = Lerp(carried, flat, wa);
+                        if (wt >= wa)
+                        {
+                            // Back onto the sphere about the toe's target: the toe stays exact however the heel eases.
+                            Vector3D arm = target - toeGoal;
+                            double armLength = arm.Length;
+                            if (armLength > 1e-9 * length) target = toeGoal + (length / armLength) * arm;
+                        }
+                    }
+                    else
+                    {
+                        target = carried;
+                    }
+
+                    footWanted = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(toeVector, toeGoal - target, Vector3D.UnitY), foot));
+                }
+
+                SolveLeg(leg, target, footWanted, toeVector, localRotations);
+            }
+        }
+
+        private void SolveLeg(Leg leg, Vector3D target, QuaternionD footWanted, Vector3D toeVector, Span<double> localRotations)
+        {
+            Skeleton s = _rig.Skeleton;
+            int parent = s.Parents[leg.Hip];
+            Vector3D hip = Vector3D.Read(_globalPositions, 3 * leg.Hip);
+            Vector3D knee = Vector3D.Read(_globalPositions, 3 * leg.Knee);
+            Vector3D ankle = Vector3D.Read(_globalPositions, 3 * leg.Ankle);
+            QuaternionD hipGlobal = QuaternionD.Read(_globalRotations, 4 * leg.Hip);
+            QuaternionD kneeGlobal = QuaternionD.Read(_globalRotations, 4 * leg.Knee);
+            // A straight knee bends towards where the foot points (or, without a toe, the root's forward +Z).
+            Vector3D hint = leg.HasToe ? toeVector : Quaternions.Apply(QuaternionD.Read(_globalRotations, 0), Vector3D.UnitZ);
+            TwoBoneIk.Solve(hip, knee, ankle, hipGlobal, kneeGlobal, target, hint, out QuaternionD newHip, out QuaternionD newKnee);
+            QuaternionD parentGlobal = QuaternionD.Read(_globalRotations, 4 * parent);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(parentGlobal), newHip)).Write(localRotations, 4 * leg.Hip);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newHip), newKnee)).Write(localRotations, 4 * leg.Knee);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newKnee), footWanted)).Write(localRotations, 4 * leg.Ankle);
+        }
+
+        internal static Vector3D Lerp(Vector3D a, Vector3D b, double t) => a + t * (b - a);
+    }
+}

@@ -1,0 +1,246 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using DeltaInterpolator.Core.Bvh;
+using DeltaInterpolator.Core.Feet;
+using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Rotations;
+using DeltaInterpolator.Core.Skeletons;
+using DeltaInterpolator.Evaluation.Baking;
+using DeltaInterpolator.OnnxRuntime;
+using NUnit.Framework;
+
+namespace DeltaInterpolator.Tests.OnnxRuntime
+{
+    /// <summary>
+    /// The component's foot locking (<see cref="PlaybackSettings.LockFeet"/>) in a simulated frame loop: a character
+    /// walks (LaFAN1 walk4_subject1, played as its own animation), and is sent through 1-second neural transitions to
+    /// its own pose a second later, with the shipped default (CMU) model on the real ONNX Runtime. The same loop with
+    /// locking on and off; foot skating is measured as bakes measure it (<see cref="FootSkating"/>: the walk's own
+    /// planted frames, the shown feet's horizontal speed there). Skips without LaFAN1 or the model.
+    /// </summary>
+    [TestFixture]
+    public sealed class FootLockFrameLoopTests
+    {
+        private static readonly double[] RequestTimes = { 6.0, 9.0, 12.0, 15.0, 18.0, 21.0, 24.0, 27.0 };
+
+        // Measured (this CPU, shipped CMU model): × 0.55 / 0.54 for 1 s transitions at 60 / 144 fps, × 0.78 for 0.5 s ones.
+        // Issue 18 asks for ≤ 0.5; the bounds below guard what is reached (a regression fails), they are not that goal.
+        [TestCase(60.0, 1.0, 0.6)]
+        [TestCase(60.0, 0.5, 0.85)]
+        [TestCase(144.0, 1.0, 0.6)]
+        public void LockingCutsTheSkatingOfAWalkingCharactersTransitions(double fps, double seconds, double most)
+        {
+            BvhAnimation walk = LoadWalk();
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(RequireDefaultModel(), requireLazy: true);
+            var (offSpeed, offSamples, offLowest) = Skating(walk, model, fps, seconds, lockFeet: false);
+            var (onSpeed, onSamples, onLowest) = Skating(walk, model, fps, seconds, lockFeet: true);
+            TestContext.Out.WriteLine($"{fps} fps, {seconds} s transitions, {onSamples} planted samples: skating {onSpeed:F3} locked, {offSpeed:F3} unlocked (× {onSpeed / offSpeed:F2}) leg lengths/s; lowest foot joint {onLowest:F3} locked, {offLowest:F3} unlocked (leg lengths above the walk's ground)");
+            Assert.That(onSamples, Is.EqualTo(offSamples).And.GreaterThan(100), "both loops are scored on the walk's own planted samples");
+            Assert.That(onSpeed, Is.LessThanOrEqualTo(most * offSpeed), "locked ÷ unlocked foot skating");
+            // Locking never pushes a foot into the floor: no shown foot joint is more than 1 % of a leg below the walk's
+            // ground, or lower than unlocked (measured: −0.002 locked, −0.032 unlocked).
+            Assert.That(onLowest, Is.GreaterThanOrEqualTo(Math.Min(-0.01, offLowest)), "lowest shown foot joint, leg lengths above the walk's ground");
+        }
+
+        [Test]
+        public void ALockedTransitionAllocatesNothingPerFrame()
+        {
+            BvhAnimation walk = LoadWalk();
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(RequireDefaultModel(), requireLazy: true);
+            var loop = new WalkLoop(walk, model, 60, lockFeet: true);
+            loop.PlayUntil(RequestTimes[0]);
+            loop.Request(1.0);
+            Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
+            loop.Step();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 40; i++) loop.Step();
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(loop.Player.IsPlaying, Is.True);
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 locked frames");
+        }
+
+        /// <summary>Mean skating (leg lengths/s) over the walk's planted samples of every transition's frames, their count, and the lowest shown foot joint (leg lengths above the walk's ground).</summary>
+        private static (double Speed, int Samples, double Lowest) Skating(BvhAnimation walk, Inbetweener model, double fps, double seconds, bool lockFeet)
+        {
+            var loop = new WalkLoop(walk, model, fps, lockFeet);
+            FootRig rig = FootRig.ForModel(walk.Motion.Skeleton);
+            int[] feet = { rig.Left.Ankle, rig.Left.Toe, rig.Right.Ankle, rig.Right.Toe };
+            // The walk's ground: the measure's own rule on the whole clip.
+            double ground = FootSkating.GroundLevel(FootSkating.FootPositions(walk.Motion, 0, walk.Motion.FrameCount, feet), feet.Length);
+            double sum = 0;
+            int samples = 0;
+            double lowest = double.PositiveInfinity;
+            foreach (double start in RequestTimes)
+            {
+                loop.PlayUntil(start);
+                var truth = new List<double>();
+                var shown = new List<double>();
+                loop.AddFeet(truth, shown, feet);
+                loop.Request(seconds);
+                Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
+                while (loop.Player.IsPlaying && !loop.Player.HasReachedTarget)
+                {
+                    loop.Step();
+                    loop.AddFeet(truth, shown, feet);
+                }
+
+                for (int i = 1; i < shown.Count; i += 3) lowest = Math.Min(lowest, (shown[i] - ground) / rig.LegLength);
+                // Frames from the request's frame to the target's, rendered at fps: the transition's frames are scored.
+                FootSkating.Accumulate(truth.ToArray(), shown.ToArray(), feet.Length, 1 / fps, 1 / fps, ground, rig.LegLength, ref sum, ref samples);
+                loop.PlayUntil(loop.Time + 0.5);
+            }
+
+            return (sum / samples, samples, lowest);
+        }
+
+        private static BvhAnimation LoadWalk()
+        {
+            string file = Path.Combine(TestEnvironment.RequireLafan1(), "walk4_subject1.bvh");
+            if (!File.Exists(file)) Assert.Ignore($"{file} not found; skipping.");
+            return BvhReader.Read(file);
+        }
+
+        private static string RequireDefaultModel()
+        {
+            string path = Path.Combine(Path.GetDirectoryName(ShippedModelTests.RequireShippedModel())!, "DeltaInterpolator-CMU.onnx");
+            if (!File.Exists(path)) Assert.Ignore($"{path} not found; skipping.");
+            return path;
+        }
+
+        /// <summary>
+        /// A character on the model's skeleton in Unity's space (metres, left-handed: <see cref="NameJointMap"/> converts)
+        /// playing the walk as its own animation at a fixed frame rate; feet are measured in the model's space.
+        /// </summary>
+        private sealed class WalkLoop
+        {
+            private readonly MotionClip _clip;
+            private readonly double _fps;
+            private readonly double[] _root = new double[3];
+            private readonly double[] _rotations;
+            private readonly double[] _globals;
+            private readonly double[] _globalRotations;
+            private readonly double[] _localPositions;
+            private readonly double[] _modelRoot = new double[3];
+            private readonly double[] _modelRotations;
+            private readonly NameJointMap _map;
+            private Stream _stream;
+            private int _frame;
+
+            public WalkLoop(BvhAnimation walk, Inbetweener model, double fps, bool lockFeet)
+            {
+                _clip = walk.Motion;
+                _fps = fps;
+                ModelContract c = model.Contract;
+                int j = _clip.Skeleton.JointCount;
+                _rotations = new double[4 * j];
+                _globals = new double[3 * j];
+                _globalRotations = new double[4 * j];
+                _localPositions = new double[3 * j];
+                _modelRotations = new double[4 * j];
+                _map = new NameJointMap(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
+                Player = new TransitionPlayer(_map, new MainThreadDecoder(model), new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
+                _stream = new Stream(new double[3], new double[4 * j]);
+                _frame = -1;
+            }
+
+            public TransitionPlayer Player { get; }
+
+            public double Time => _frame / _fps;
+
+            public void PlayUntil(double time)
+            {
+                while ((_frame + 1) / _fps <= time + 1e-9) Step();
+            }
+
+            public void Step()
+            {
+                _frame++;
+                Sample(Time, _stream.Root, _stream.Rotations);
+                Player.Step(Time, ref _stream);
+            }
+
+            /// <summary>A transition to the walk's own pose <paramref name="seconds"/> from now.</summary>
+            public void Request(double seconds)
+            {
+                Sample(Time + seconds, _root, _rotations);
+                Player.RequestTransition(_root, _rotations, seconds);
+            }
+
+            /// <summary>Appends the walk's and the shown pose's foot joint positions (model space) at this frame.</summary>
+            public void AddFeet(List<double> truth, List<double> shown, int[] feet)
+            {
+                Sample(Time, _root, _rotations);
+                AddFeet(_root, _rotations, truth, feet);
+                AddFeet(_stream.Root, _stream.Rotations, shown, feet);
+            }
+
+            private void AddFeet(double[] root, double[] rotations, List<double> into, int[] feet)
+            {
+                Skeleton s = _clip.Skeleton;
+                _map.ToModel(root, rotations, _modelRoot, _modelRotations);
+                s.OffsetSpan.CopyTo(_localPositions);
+                for (int k = 0; k < 3; k++) _localPositions[k] = _modelRoot[k];
+                rotations = _modelRotations;
+                Core.Kinematics.ForwardKinematics.ComputeFrame(s.ParentSpan, _localPositions, Vector3D.Read(_localPositions, 0), rotations, _globals, _globalRotations);
+                foreach (int f in feet)
+                {
+                    for (int k = 0; k < 3; k++) into.Add(_globals[3 * f + k]);
+                }
+            }
+
+            /// <summary>The walk at <paramref name="time"/> (frames interpolated) as the character's pose (Unity space).</summary>
+            private void Sample(double time, double[] root, double[] rotations)
+            {
+                SampleModel(time, _modelRoot, _modelRotations);
+                _map.ToCharacter(_modelRoot, _modelRotations, root, rotations);
+            }
+
+            private void SampleModel(double time, double[] root, double[] rotations)
+            {
+                double u = Math.Max(0, Math.Min(_clip.FrameCount - 1.000001, time / _clip.FrameTime));
+                int a = (int)Math.Floor(u);
+                double f = u - a;
+                int j = _clip.Skeleton.JointCount;
+                for (int k = 0; k < 3; k++)
+                {
+                    double pa = _clip.LocalPositions[_clip.PositionIndex(a, 0) + k], pb = _clip.LocalPositions[_clip.PositionIndex(a + 1, 0) + k];
+                    root[k] = pa + f * (pb - pa);
+                }
+
+                for (int b = 0; b < j; b++)
+                {
+                    QuaternionD qa = QuaternionD.Read(_clip.LocalRotations, _clip.RotationIndex(a, b));
+                    QuaternionD qb = QuaternionD.Read(_clip.LocalRotations, _clip.RotationIndex(a + 1, b));
+                    Quaternions.Slerp(qa, qb, f).Write(rotations, 4 * b);
+                }
+            }
+        }
+
+        /// <summary>The character's pose as the Animator's stream (two arrays).</summary>
+        private struct Stream : IPoseStream
+        {
+            public Stream(double[] root, double[] rotations)
+            {
+                Root = root;
+                Rotations = rotations;
+            }
+
+            public double[] Root { get; }
+
+            public double[] Rotations { get; }
+
+            public int BoneCount => Rotations.Length / 4;
+
+            public Vector3D ReadRootPosition() => Vector3D.Read(Root, 0);
+
+            public void WriteRootPosition(Vector3D position) => position.Write(Root, 0);
+
+            public QuaternionD ReadLocalRotation(int bone) => QuaternionD.Read(Rotations, 4 * bone);
+
+            public void WriteLocalRotation(int bone, QuaternionD rotation) => rotation.Write(Rotations, 4 * bone);
+        }
+    }
+}
