@@ -116,3 +116,13 @@ def test_output_rules(tiny_copy, tmp_path):
         quantize_model(out, tmp_path / "qq.onnx", min_weights=1)
     with pytest.raises(QuantizeError, match="'keys' graph"):
         quantize_model(tiny_copy.with_name("tiny.keys.onnx"), tmp_path / "k.onnx", min_weights=1)
+
+
+def test_the_csharp_fixture_is_what_quantize_writes(tiny_copy, tmp_path):
+    # Tests/Runtime/OnnxRuntime/QuantizedModelTests runs these files on the real ONNX Runtime
+    out = quantize_model(tiny_copy, tmp_path / "tiny-model.int8.onnx", "fused", 1).paths
+    for kind, path in out.items():
+        committed = REPO / "Tests" / "Fixtures~" / path.name
+        assert committed.read_bytes() == path.read_bytes(), (
+            f"{committed.name} is stale; run PYTHONPATH=Training/Python~ python3 -m deltainterp quantize --model "
+            "Tests/Fixtures~/tiny-model.onnx --out Tests/Fixtures~/tiny-model.int8.onnx --min-weights 1 --force")
