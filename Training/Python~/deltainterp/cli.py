@@ -1,4 +1,4 @@
-"""Command line: python3 -m deltainterp prepare|train|evaluate|export|fixtures (see --help of each)."""
+"""Command line: python3 -m deltainterp prepare|train|evaluate|export|quantize|fixtures (see --help of each)."""
 from __future__ import annotations
 
 import argparse
@@ -257,6 +257,42 @@ def _evaluate_export_fixtures(sub) -> None:
                    help="LaFAN1 folder for the skeleton (optional: a built-in copy is used without it)")
 
 
+def _quantize(sub) -> None:
+    from .quantize import DEFAULT_MIN_WEIGHTS, FORMS
+    p = sub.add_parser(
+        "quantize", help="dynamic int8 copy of an exported model, for ONNX Runtime only (not Sentis)",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Rewrites every MatMul with a constant weight of the whole graph MODEL and, beside it, its "
+                    ".keys.onnx and .frame.onnx\ninto dynamically quantized products (activations uint8 per "
+                    "tensor at run time, weights int8 per\noutput column) and writes them to OUT, OUT's "
+                    ".keys.onnx and .frame.onnx with the same inputs, outputs and\nmetadata (plus a "
+                    "'quantization' entry). ONNX Runtime only: Unity Sentis cannot import these operators.\n"
+                    "Prints each graph's largest output difference to float (relative to the output's largest "
+                    "value,\nnumpy reference evaluator). Measure with `inbetween benchmark` and `inbetween speed` "
+                    "before using\nit (Documentation~/int8.md).\n"
+                    "Example:\n  PYTHONPATH=Training/Python~ python3 -m deltainterp quantize "
+                    "--model Runtime/Models/DeltaInterpolator-CMU.onnx --out out/DeltaInterpolator-CMU.int8.onnx")
+    p.add_argument("--model", required=True, help="the float whole graph NAME.onnx (its lazy graphs are found beside it)")
+    p.add_argument("--out", required=True, help="output path ending in .onnx (e.g. NAME.int8.onnx)")
+    p.add_argument("--form", choices=FORMS, default="fused",
+                   help="fused: com.microsoft DynamicQuantizeMatMul nodes; integer: standard DynamicQuantizeLinear "
+                        "→ MatMulInteger → Cast → Mul (default fused)")
+    p.add_argument("--min-weights", type=int, default=DEFAULT_MIN_WEIGHTS,
+                   help=f"quantize only weights of at least this many elements (default {DEFAULT_MIN_WEIGHTS})")
+    p.add_argument("--force", action="store_true", help="replace existing output files")
+
+
+def _run_quantize(args) -> int:
+    from .quantize import quantize_model
+    report = quantize_model(args.model, args.out, args.form, args.min_weights, args.force)
+    for kind, path in report.paths.items():
+        g = report.graphs[kind]
+        before, after = report.sizes[kind]
+        print(f"  {kind:<5} {path}  {_size(before)} → {_size(after)}  {len(g.quantized)} MatMuls int8, "
+              f"{len(g.kept)} float; max |int8 − float| / max |float| = {report.relative_difference[kind]:.2%}")
+    return 0
+
+
 def _bvh_files(folder) -> List[str]:
     """The *.bvh files of a --data folder (none for anything else): inputs no output may replace."""
     return [str(p) for p in Path(folder).glob("*.bvh")] if folder and Path(folder).is_dir() else []
@@ -362,6 +398,7 @@ def build_parser() -> argparse.ArgumentParser:
     _prepare(sub)
     _train(sub)
     _evaluate_export_fixtures(sub)
+    _quantize(sub)
     return parser
 
 
@@ -389,6 +426,8 @@ def main(argv: Optional[List[str]] = None) -> int:
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0
+        if args.verb == "quantize":
+            return _run_quantize(args)
         return _run_evaluate_export_fixtures(args)
     except ValueError as e:  # CheckpointError, OutputPathError, bad data: `FILE: what; expected`
         print(f"error: {e}", file=sys.stderr)

@@ -97,7 +97,8 @@ def _reduce(fn):
 def _cast(ins, at):
     import onnx
     import onnx.numpy_helper
-    return ins[0].astype(onnx.helper.tensor_dtype_to_np_dtype(at["to"]))
+    to_numpy = getattr(onnx.helper, "tensor_dtype_to_np_dtype", None)  # onnx ≥ 1.13; older: onnx.mapping
+    return ins[0].astype(to_numpy(at["to"]) if to_numpy else onnx.mapping.TENSOR_TYPE_TO_NP_TYPE[at["to"]])
 
 
 def _constant(ins, at):
@@ -112,6 +113,40 @@ def _constant(ins, at):
         if key in at:
             return np.array(at[key])
     raise NotImplementedError(f"Constant with attributes {sorted(at)}")
+
+
+def _dynamic_quantize_linear(ins, at):
+    """ONNX DynamicQuantizeLinear (opset 11): uint8, the range widened to hold 0, round half to even."""
+    x = ins[0].astype(np.float32)
+    low, high = min(0.0, float(x.min())) if x.size else 0.0, max(0.0, float(x.max())) if x.size else 0.0
+    scale = np.float32((high - low) / 255.0)
+    if scale == 0:  # an all-zero tensor: the specification divides by zero; ONNX Runtime gives zeros
+        return (np.zeros(x.shape, np.uint8), np.float32(0), np.uint8(0))
+    zero_point = np.uint8(np.clip(np.rint(np.float32(0 - low) / scale), 0, 255))
+    y = np.clip(np.rint(x / scale) + zero_point, 0, 255).astype(np.uint8)
+    return (y, scale, zero_point)
+
+
+def _integer_product(a, b, a_zero, b_zero):
+    a = a.astype(np.int32) - (np.int32(0) if a_zero is None else a_zero.astype(np.int32))
+    b = b.astype(np.int32) - (np.int32(0) if b_zero is None else b_zero.astype(np.int32))
+    return np.matmul(a, b).astype(np.int32)
+
+
+def _matmul_integer(ins, at):
+    """ONNX MatMulInteger (opset 10): (A − a_zero) · (B − b_zero) in int32; b_zero scalar or per column."""
+    return _integer_product(ins[0], ins[1], ins[2] if len(ins) > 2 else None, ins[3] if len(ins) > 3 else None)
+
+
+def _dynamic_quantize_matmul(ins, at):
+    """com.microsoft DynamicQuantizeMatMul (ONNX Runtime contrib): A quantized as DynamicQuantizeLinear,
+    the integer product with B, rescaled by A's scale × b_scale (scalar or per column), plus the bias."""
+    a_q, a_scale, a_zero = _dynamic_quantize_linear([ins[0]], at)
+    b_zero = ins[3] if len(ins) > 3 else None
+    y = _integer_product(a_q, ins[1], a_zero, b_zero).astype(np.float32) * (a_scale * ins[2].astype(np.float32))
+    if len(ins) > 4 and ins[4] is not None:
+        y = y + ins[4]
+    return y.astype(np.float32)
 
 
 def _keep_dtype(fn):
@@ -154,6 +189,10 @@ OPS: Dict[str, Callable] = {
     "Constant": _constant,
     "Identity": lambda i, a: i[0],
     "Dropout": lambda i, a: i[0],
+    # dynamic int8 quantization (deltainterp quantize; ONNX Runtime only)
+    "DynamicQuantizeLinear": _dynamic_quantize_linear,
+    "MatMulInteger": _matmul_integer,
+    "DynamicQuantizeMatMul": _dynamic_quantize_matmul,
 }
 
 
@@ -173,9 +212,11 @@ def run_graph(graph, feeds: Dict[str, Array]) -> Dict[str, Array]:
             raise NotImplementedError(f"onnx_reference has no '{node.op_type}' (node {node.name})")
         ins = [values[n] if n else None for n in node.input]
         out = OPS[node.op_type](ins, _attrs(node))
-        if len(node.output) != 1:
+        outs = out if isinstance(out, tuple) else (out,)  # DynamicQuantizeLinear has three
+        if len(node.output) != len(outs):
             raise NotImplementedError(f"{node.op_type} with {len(node.output)} outputs")
-        values[node.output[0]] = np.asarray(out)
+        for name, value in zip(node.output, outs):
+            values[name] = np.asarray(value)
     return {o.name: values[o.name] for o in graph.output}
 
 
