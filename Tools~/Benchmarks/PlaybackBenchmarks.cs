@@ -128,20 +128,18 @@ namespace DeltaInterpolator.Benchmarks
 
     internal static class PlaybackSetup
     {
-        /// <summary>Runtime/Models/DeltaInterpolator-LaFAN1.onnx, found above the benchmark's folder.</summary>
+        /// <summary>
+        /// The shipped default model (<see cref="ShippedModels.Default"/>, found as the CLI finds it). Not the LaFAN1
+        /// model: its graphs are contract version 1 (one row per run), so a "batched" crowd on it ran one character per
+        /// run and the crowd benchmark's batched case measured no batching at all.
+        /// </summary>
         public static string ShippedModel
         {
             get
             {
-                string? dir = AppContext.BaseDirectory;
-                while (dir != null)
-                {
-                    string candidate = Path.Combine(dir, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
-                    if (File.Exists(candidate)) return candidate;
-                    dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
-                }
-
-                throw new FileNotFoundException("Runtime/Models/DeltaInterpolator-LaFAN1.onnx not found above " + AppContext.BaseDirectory);
+                string path = ShippedModels.Find(ShippedModels.Default);
+                if (!File.Exists(path)) throw new FileNotFoundException($"{ShippedModels.Default} not found above {Directory.GetCurrentDirectory()} or {AppContext.BaseDirectory}");
+                return path;
             }
         }
 
