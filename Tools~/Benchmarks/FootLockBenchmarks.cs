@@ -88,7 +88,7 @@ namespace DeltaInterpolator.Benchmarks
                 _lockers[c] = new FootLocker(rig);
                 _lockers[c].Plan(_clips[c], new[] { 0, Frames - 1 });
                 _rotations[c] = new double[4 * j];
-                _live[c] = new LiveFootLocker(rig, FootLockSettings.ForPlayback());
+                _live[c] = new LiveFootLocker(rig);
             }
 
             BeginTransitions();

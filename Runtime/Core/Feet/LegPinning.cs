@@ -45,7 +45,15 @@ namespace DeltaInterpolator.Core.Feet
         /// one weight per channel (left ankle, left toe, right ankle, right toe), <paramref name="targets"/> their
         /// targets (channels × 3); a leg whose two weights are 0 is left alone.
         /// </summary>
-        public void Pin(ReadOnlySpan<double> weights, ReadOnlySpan<double> targets, Span<double> localRotations)
+        public void Pin(ReadOnlySpan<double> weights, ReadOnlySpan<double> targets, Span<double> localRotations) => Pin(weights, targets, default, localRotations);
+
+        /// <summary>
+        /// <see cref="Pin(ReadOnlySpan{double}, ReadOnlySpan{double}, Span{double})"/>, and where a held heel's free toe would end
+        /// below <paramref name="toeFloors"/> (per side, a height; empty for none), the foot is pitched up about the heel until
+        /// the toe is on it: keeping the motion's foot orientation while the heel is held lower than the motion had it
+        /// would push the toe into the floor.
+        /// </summary>
+        public void Pin(ReadOnlySpan<double> weights, ReadOnlySpan<double> targets, ReadOnlySpan<double> toeFloors, Span<double> localRotations)
         {
             for (int side = 0; side < 2; side++)
             {
@@ -91,6 +99,21 @@ namespace DeltaInterpolator.Core.Feet
                     }
 
                     footWanted = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(toeVector, toeGoal - target, Vector3D.UnitY), foot));
+                }
+
+                if (leg.HasToe && toeFloors.Length == 2)
+                {
+                    // Wherever the blend of held and free joints put the foot, its toe does not go below the floor: same
+                    // length and heading, pitched up about the ankle until the toe stands on it.
+                    Vector3D toeNow = Quaternions.Apply(Quaternions.Multiply(footWanted, Quaternions.Conjugate(foot)), toeVector);
+                    double length = toeNow.Length, flat = Math.Sqrt(toeNow.X * toeNow.X + toeNow.Z * toeNow.Z);
+                    if (target.Y + toeNow.Y < toeFloors[side] && flat > 1e-9 * length)
+                    {
+                        double y = Math.Max(-length, Math.Min(length, toeFloors[side] - target.Y));
+                        double h = Math.Sqrt(length * length - y * y) / flat;
+                        var lifted = new Vector3D(h * toeNow.X, y, h * toeNow.Z);
+                        footWanted = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(toeNow, lifted, Vector3D.UnitY), footWanted));
+                    }
                 }
 
                 SolveLeg(leg, target, footWanted, toeVector, localRotations);

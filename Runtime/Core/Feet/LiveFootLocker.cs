@@ -25,8 +25,9 @@ namespace DeltaInterpolator.Core.Feet
     /// the hysteresis of <see cref="FootLocker.NextPlanted"/> on its height and speed; it is held where it touched
     /// down, or, when the target plants it within the hold distance, on the target's spot (so the transition lands
     /// it where the target has it). Such contacts ease in over <see cref="FootLockSettings.EaseSeconds"/> after
-    /// touch-down (nothing later is known yet); every contact eases out over the same time after it ends, pulling
-    /// less where the filled motion has carried the joint far (<see cref="FootLockSettings.EaseReach"/>).</para>
+    /// touch-down unless they start where the joint is (nothing later is known yet); every contact eases out over the
+    /// same time after it ends, trailing the motion by at most <see cref="FootLockSettings.EaseReach"/> and catching up
+    /// by at most that much per ease time.</para>
     /// <para><b>The target is never changed.</b> A contact not on the target's spot eases out before the target
     /// time, so the last filled frames meet the target pose; a target beyond the leg's reach
     /// (<see cref="FootLockSettings.MaxReach"/>) releases the joint instead of stretching the leg.</para>
@@ -54,6 +55,8 @@ namespace DeltaInterpolator.Core.Feet
         private readonly bool[] _onTarget = new bool[Channels];
         private readonly double[] _anchor = new double[3 * Channels];
         private readonly double[] _shownAnchor = new double[3 * Channels];
+        private readonly double[] _toeFloor = new double[2];
+        private readonly double[] _lastFar = new double[Channels]; // per channel: distance of the motion's joint from its hold, last frame
         private readonly double[] _weight = new double[Channels];
         private readonly double[] _shownWeight = new double[Channels];
         private readonly double[] _previous = new double[3 * Channels];
@@ -71,12 +74,12 @@ namespace DeltaInterpolator.Core.Feet
             Releasing,
         }
 
-        /// <summary>Creates a locker for the model's rig (<see cref="FootRig.ForModel"/>).</summary>
+        /// <summary>Creates a locker for the model's rig (<see cref="FootRig.ForModel"/>); settings default to <see cref="FootLockSettings.ForPlayback"/>.</summary>
         /// <exception cref="ArgumentException">A leg is not a chain thigh → knee → ankle (→ toe).</exception>
         public LiveFootLocker(FootRig rig, FootLockSettings? settings = null)
         {
             _rig = rig ?? throw new ArgumentNullException(nameof(rig));
-            _settings = settings ?? new FootLockSettings();
+            _settings = settings ?? FootLockSettings.ForPlayback();
             _settings.Validate();
             Skeleton s = rig.Skeleton;
             for (int side = 0; side < 2; side++)
@@ -196,6 +199,7 @@ namespace DeltaInterpolator.Core.Feet
                     double speed = HorizontalDistance(p, Vector3D.Read(_previous, 3 * c)) / dt;
                     p.Write(_previous, 3 * c);
                     Update(c, p, rise, speed, u, dt, ease, leg);
+                    _lastFar[c] = (Vector3D.Read(_anchor, 3 * c) - p).Length;
                 }
 
                 double w = _weight[c];
@@ -223,13 +227,15 @@ namespace DeltaInterpolator.Core.Feet
             }
 
             _previousTime = Math.Max(time, _previousTime);
-            for (int side = 0; side < 2 && any; side++)
+            if (!any) return;
+            for (int side = 0; side < 2; side++)
             {
                 LandWholeFoot(2 * side, 2 * side + 1);
-                KeepToeAboveGround(side, ground, leg);
+                // No toe of a held foot goes more than 1 % of a leg below its planted height.
+                _toeFloor[side] = ground + _plantedHeight[2 * side + 1] - 0.01 * leg;
             }
 
-            if (any) _pinning.Pin(_shownWeight, _shownAnchor, rotations);
+            _pinning.Pin(_shownWeight, _shownAnchor, _toeFloor, rotations);
         }
 
         private void Update(int c, Vector3D p, double rise, double speed, double u, double dt, double ease, double leg)
@@ -334,28 +340,6 @@ namespace DeltaInterpolator.Core.Feet
             }
         }
 
-        /// <summary>
-        /// A held heel with a free toe: the foot keeps the filled motion's orientation, which may tip the toe into the
-        /// floor where the heel is held lower than the motion had it; then the toe is held too, at its planted height,
-        /// the foot pitched up about the heel (same length, same heading).
-        /// </summary>
-        private void KeepToeAboveGround(int side, double ground, double leg)
-        {
-            int a = 2 * side, t = a + 1;
-            if (_channelJoint[t] < 0 || _shownWeight[a] <= 0 || _shownWeight[t] > 0) return;
-            double[] g = _pinning.GlobalPositions;
-            Vector3D ankle = Vector3D.Read(g, 3 * _channelJoint[a]);
-            Vector3D toe = Vector3D.Read(g, 3 * _channelJoint[t]) - ankle;
-            Vector3D heel = LegPinning.Lerp(ankle, Vector3D.Read(_shownAnchor, 3 * a), _shownWeight[a]);
-            double floor = ground + _plantedHeight[t] - 0.01 * leg;
-            double length = toe.Length, flat = Math.Sqrt(toe.X * toe.X + toe.Z * toe.Z);
-            if (heel.Y + toe.Y >= floor || flat < 1e-9 * length) return;
-            double y = Math.Max(-length, Math.Min(length, floor + 0.01 * leg - heel.Y));
-            double h = Math.Sqrt(length * length - y * y) / flat;
-            new Vector3D(heel.X + h * toe.X, heel.Y + y, heel.Z + h * toe.Z).Write(_shownAnchor, 3 * t);
-            _shownWeight[t] = 1;
-        }
-
         private void Release(int c)
         {
             _state[c] = ContactState.Releasing;
@@ -363,14 +347,21 @@ namespace DeltaInterpolator.Core.Feet
             _onTarget[c] = false;
         }
 
-        /// <summary>Eases a released joint's weight out over the ease time, less where the filled motion carried it far.</summary>
+        /// <summary>
+        /// Eases a released joint out: how far it trails the motion (weight × distance from its hold) shrinks by at most
+        /// <see cref="FootLockSettings.EaseReach"/> per ease time (its whole reach over the ease), and is never more than
+        /// that reach (a swinging foot is not dragged back). Measured as a distance, not a weight, so that a joint the
+        /// motion carries away fast catches up smoothly instead of jumping by the weight's step times the distance.
+        /// Without a reach, by time alone.
+        /// </summary>
         private void Fade(int c, Vector3D p, double step, double leg)
         {
+            double far = (Vector3D.Read(_anchor, 3 * c) - p).Length, reach = _settings.EaseReach * leg;
             double w = Math.Max(0, _weight[c] - step);
-            if (_settings.EaseReach > 0)
+            if (reach > 0 && far > 1e-9 * leg)
             {
-                double far = (Vector3D.Read(_anchor, 3 * c) - p).Length;
-                w = Math.Min(w, Math.Max(0, 1 - far / (_settings.EaseReach * leg)));
+                double trail = Math.Min(reach, _weight[c] * _lastFar[c]) - reach * step;
+                w = Math.Max(0, Math.Min(_weight[c], trail / far));
             }
 
             _weight[c] = w;

@@ -101,7 +101,7 @@ namespace DeltaInterpolator.Core.Playback
             _targetRotations = new double[b * 4];
             _shownRotations = new double[b * 4];
             _ease = new EaseIn(_joints);
-            if (FootRig.HasModelLegs(c.Skeleton)) _feet = new LiveFootLocker(FootRig.ForModel(c.Skeleton), FootLockSettings.ForPlayback());
+            if (FootRig.HasModelLegs(c.Skeleton)) _feet = new LiveFootLocker(FootRig.ForModel(c.Skeleton));
         }
 
         /// <summary>Reports every request exactly once: when its target pose is shown, or when it is interrupted or cancelled.</summary>
@@ -154,6 +154,9 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>The current request's job (SLERP and network frames), for tests and tools.</summary>
         internal TransitionJob? CurrentJob => _job;
+
+        /// <summary>The foot locker of this character's transitions (null when the model's skeleton lacks leg joints), for tests and tools.</summary>
+        internal LiveFootLocker? Feet => _feet;
 
         /// <summary>Missing frames of the current request decoded so far.</summary>
         public int DecodedFrames => _job?.Decoded ?? 0;
