@@ -188,6 +188,14 @@ namespace DeltaInterpolator.Tests.Feet
                 }
             }
 
+            // One contact, one spot: the foot never outruns the hips (a contact split by the reach used to jump to a spot of its own).
+            for (int f = 1; f <= 30; f++)
+            {
+                Vector3D ankleStep = Vector3D.Read(g, (f * j + rig.Left.Ankle) * 3) - Vector3D.Read(g, ((f - 1) * j + rig.Left.Ankle) * 3);
+                Vector3D hipStep = Vector3D.Read(g, (f * j + rig.Left.Hip) * 3) - Vector3D.Read(g, ((f - 1) * j + rig.Left.Hip) * 3);
+                Assert.That(ankleStep.Length, Is.LessThanOrEqualTo(hipStep.Length + 0.01 * rig.LegLength), $"frame {f}: the ankle jumps");
+            }
+
             Assert.That(locker.IsPlanted(0, 1) && locker.IsPlanted(30, 1), Is.True, "the keys stand on the ground");
         }
 
