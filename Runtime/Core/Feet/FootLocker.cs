@@ -32,10 +32,11 @@ namespace DeltaInterpolator.Core.Feet
     /// contacts of a joint are kept at least the ease apart, so that it moves from one spot to the next.</para>
     /// <para><b>Where a planted joint is held.</b> A contact through key frames holds the joint where the keys
     /// have it (linearly from key to key, so it meets every key exactly); any other contact holds it at its mean
-    /// position over the contact, within 1 % of a leg length of its planted height above the ground there. A
+    /// position over the contact, within 1 % of a leg length of its planted height above the ground there. On a
     /// contact frame whose target the leg cannot reach (farther from the hip than
     /// <see cref="FootLockSettings.MaxReach"/> of thigh + shin, and farther than the filled motion already
-    /// stretches it) is dropped: the foot is released, not stretched. Weights ease from 0 to 1 over
+    /// stretches it) the target moves towards the filled joint just into reach: the foot is not stretched, and the
+    /// contact is not split (a remainder held on a spot of its own would make the foot jump). Weights ease from 0 to 1 over
     /// <see cref="FootLockSettings.EaseSeconds"/> before a contact and back after it, never across a key, and
     /// fade where the filled joint is far from the target (<see cref="FootLockSettings.EaseReach"/>).</para>
     /// <para><b>Solving a leg</b>: <see cref="LegPinning"/> (shared with the run-time <see cref="LiveFootLocker"/>);
@@ -75,6 +76,7 @@ namespace DeltaInterpolator.Core.Feet
         private double[] _anchor = Array.Empty<double>();   // channel × capacity × 3
         private double[] _weight = Array.Empty<double>();   // channel × capacity
         private bool[] _isKey = Array.Empty<bool>();        // capacity
+        private bool[] _beyondReach = Array.Empty<bool>();  // channel × capacity: contact frames whose spot the leg cannot reach
         private double[] _scratch = Array.Empty<double>();  // 3 × capacity
 
         /// <summary>Creates a locker for a rig (usually <see cref="FootRig.ForModel"/>).</summary>
@@ -114,13 +116,15 @@ namespace DeltaInterpolator.Core.Feet
 
         /// <summary>
         /// After <see cref="Lock"/> or <see cref="Plan"/>: whether foot joint <paramref name="channel"/> (0 left ankle,
-        /// 1 left toe, 2 right ankle, 3 right toe) is planted on <paramref name="frame"/>.
+        /// 1 left toe, 2 right ankle, 3 right toe) is planted on <paramref name="frame"/>: held on its spot (not on a
+        /// frame of a contact where the leg cannot reach the foot's spot: the foot is only kept as near it as the leg reaches).
         /// </summary>
         public bool IsPlanted(int frame, int channel)
         {
             if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
             if ((uint)channel >= ChannelCount) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
-            return _segment[channel * _capacity + frame] != 0;
+            // A foot one of whose joints is pulled towards the hips is off its spot as a whole (the other joint's solve moves with it).
+            return _segment[channel * _capacity + frame] != 0 && !_beyondReach[channel * _capacity + frame] && !_beyondReach[(channel ^ 1) * _capacity + frame];
         }
 
         /// <summary>After <see cref="Plan"/>: how strongly (0..1) foot joint <paramref name="channel"/> is held on <paramref name="frame"/>.</summary>
@@ -185,6 +189,7 @@ namespace DeltaInterpolator.Core.Feet
             int ease = Math.Max(1, (int)Math.Round(_settings.EaseSeconds / dt));
             Array.Clear(_segment, 0, _segment.Length);
             Array.Clear(_weight, 0, _weight.Length);
+            Array.Clear(_beyondReach, 0, _beyondReach.Length);
             for (int c = 0; c < ChannelCount; c++)
             {
                 if (_channelJoint[c] < 0) continue;
@@ -197,7 +202,7 @@ namespace DeltaInterpolator.Core.Feet
                 LabelFree(c, leg, dt, minFrames, ref next);
                 Separate(c, ease);
                 Anchor(c, leg);
-                if (ReleaseUnreachable(c)) Anchor(c, leg);
+                PullIntoReach(c);
                 Ease(c, ease);
             }
 
@@ -246,6 +251,7 @@ namespace DeltaInterpolator.Core.Feet
             _anchor = new double[ChannelCount * cap * 3];
             _weight = new double[ChannelCount * cap];
             _isKey = new bool[cap];
+            _beyondReach = new bool[ChannelCount * cap];
             _scratch = new double[3 * cap];
         }
 
@@ -611,30 +617,39 @@ namespace DeltaInterpolator.Core.Feet
             }
         }
 
-        /// <summary>Unlabels contact frames whose ankle target lies beyond the leg's reach; true when any was.</summary>
-        private bool ReleaseUnreachable(int c)
+        /// <summary>
+        /// Moves each contact frame's target that the leg cannot reach towards where the filled motion has the joint,
+        /// just as far as the leg reaches. Dropping the frame instead would split the contact, and the rest of it would be
+        /// held at a spot of its own: the foot would jump there and back. Pulled, it slides only as much as the hips
+        /// outrun it, and stays on its spot wherever the leg reaches.
+        /// </summary>
+        private void PullIntoReach(int c)
         {
             int cap = _capacity, side = c / 2;
             bool toe = (c & 1) == 1;
             double full = TwoBoneIk.MaxExtension * (_thigh[side] + _shin[side]);
             double reach = _settings.MaxReach * (_thigh[side] + _shin[side]);
-            bool any = false;
             for (int f = 0; f < _frames; f++)
             {
                 if (_segment[c * cap + f] == 0 || _isKey[f]) continue;
-                Vector3D target = Vector3D.Read(_anchor, (c * cap + f) * 3);
-                if (toe) target = target - Vector3D.Read(_toeVector, (side * cap + f) * 3);
+                int at = (c * cap + f) * 3;
+                Vector3D anchor = Vector3D.Read(_anchor, at);
                 Vector3D hip = Vector3D.Read(_hips, (side * cap + f) * 3);
+                // The ankle's target (a toe's less the foot), relative to the hip.
+                Vector3D fromHip = toe ? anchor - Vector3D.Read(_toeVector, (side * cap + f) * 3) - hip : anchor - hip;
                 // A leg already that straight in the motion may stay so (a standing leg); only a longer reach is refused.
                 double now = (Vector3D.Read(_feet, ((2 * side) * cap + f) * 3) - hip).Length;
-                if ((target - hip).Length > Math.Max(reach, Math.Min(now + 1e-3 * _rig.LegLength, full)))
-                {
-                    _segment[c * cap + f] = 0;
-                    any = true;
-                }
+                double limit = Math.Max(reach, Math.Min(now + 1e-3 * _rig.LegLength, full));
+                if (fromHip.Length <= limit) continue;
+                // The first point on the way from the target to the filled joint that is within the limit:
+                // |fromHip + t·towards| = limit, smallest t in [0, 1] (t = 1, the filled joint, is within it).
+                Vector3D towards = Vector3D.Read(_feet, at) - anchor;
+                double a = Vector3D.Dot(towards, towards), b = Vector3D.Dot(fromHip, towards), cc = Vector3D.Dot(fromHip, fromHip) - limit * limit;
+                double disc = b * b - a * cc;
+                double t = a <= 0 || disc < 0 ? 1 : Math.Max(0, Math.Min(1, (-b - Math.Sqrt(disc)) / a));
+                (anchor + t * towards).Write(_anchor, at);
+                _beyondReach[c * cap + f] = true;
             }
-
-            return any;
         }
 
         /// <summary>Weights of channel c: 1 on contact frames, easing to 0 over <paramref name="ease"/> frames before and after, never across a key or into another contact.</summary>

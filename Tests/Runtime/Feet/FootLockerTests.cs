@@ -153,7 +153,7 @@ namespace DeltaInterpolator.Tests.Feet
         }
 
         [Test]
-        public void AFootTheLegCannotReachIsReleasedNotStretched()
+        public void AFootTheLegCannotReachIsHeldAsNearAsItReachesNotStretched()
         {
             // Standing straight-legged on keys 0 and 30; between them the hips glide up to 25 cm forward, the feet
             // drifting with them (within the hold distance): holding them at the keys' spot is out of the legs' reach.
@@ -162,6 +162,7 @@ namespace DeltaInterpolator.Tests.Feet
             MotionClip clip = FeetFixtures.Standing(s, 31, FrameTime);
             int j = s.JointCount;
             for (int f = 1; f < 30; f++) clip.LocalPositions[f * j * 3 + 2] += 25 * Math.Sin(Math.PI * f / 30);
+            double[] original = FeetFixtures.GlobalPositions(clip);
             var locker = new FootLocker(rig);
             locker.Lock(clip, new[] { 0, 30 });
             double[] g = FeetFixtures.GlobalPositions(clip);
@@ -175,9 +176,24 @@ namespace DeltaInterpolator.Tests.Feet
                     Assert.That(reach, Is.LessThanOrEqualTo(legReach + 1e-9));
                 }
 
-                // Beyond the reach of a straight leg from the keys' spot, nothing is held.
+                // Beyond the reach of a straight leg from the keys' spot, the foot stays as near it as the leg reaches:
+                // the leg straight, the ankle behind the hips (never carried past where the motion had it).
                 Vector3D hip = Vector3D.Read(g, (f * j + rig.Left.Hip) * 3), keyAnkle = Vector3D.Read(g, rig.Left.Ankle * 3);
-                if ((keyAnkle - hip).Length > legReach) Assert.That(locker.IsPlanted(f, 0), Is.False, $"frame {f}");
+                if ((keyAnkle - hip).Length > legReach)
+                {
+                    Vector3D ankle = Vector3D.Read(g, (f * j + rig.Left.Ankle) * 3), filled = Vector3D.Read(original, (f * j + rig.Left.Ankle) * 3);
+                    Assert.That((ankle - hip).Length, Is.GreaterThan(0.98 * legReach), $"frame {f}: the leg is straight");
+                    Assert.That(ankle.Z, Is.LessThanOrEqualTo(filled.Z + 1e-9).And.GreaterThanOrEqualTo(keyAnkle.Z - 1e-9), $"frame {f}: between the spot and the filled foot");
+                    Assert.That(locker.IsPlanted(f, 0), Is.False, $"frame {f}: not on its spot");
+                }
+            }
+
+            // One contact, one spot: the foot never outruns the hips (a contact split by the reach used to jump to a spot of its own).
+            for (int f = 1; f <= 30; f++)
+            {
+                Vector3D ankleStep = Vector3D.Read(g, (f * j + rig.Left.Ankle) * 3) - Vector3D.Read(g, ((f - 1) * j + rig.Left.Ankle) * 3);
+                Vector3D hipStep = Vector3D.Read(g, (f * j + rig.Left.Hip) * 3) - Vector3D.Read(g, ((f - 1) * j + rig.Left.Hip) * 3);
+                Assert.That(ankleStep.Length, Is.LessThanOrEqualTo(hipStep.Length + 0.01 * rig.LegLength), $"frame {f}: the ankle jumps");
             }
 
             Assert.That(locker.IsPlanted(0, 1) && locker.IsPlanted(30, 1), Is.True, "the keys stand on the ground");
