@@ -86,22 +86,17 @@ namespace DeltaInterpolator.Core.Feet
             _rig = rig ?? throw new ArgumentNullException(nameof(rig));
             _settings = settings ?? new FootLockSettings();
             _settings.Validate();
+            _pinning = new LegPinning(rig); // checks the leg chains
             Skeleton s = rig.Skeleton;
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                if (s.Parents[leg.Knee] != leg.Hip || s.Parents[leg.Ankle] != leg.Knee || (leg.HasToe && s.Parents[leg.Toe] != leg.Ankle))
-                {
-                    throw new ArgumentException($"the {(side == 0 ? "left" : "right")} leg ({s.Names[leg.Hip]}, {s.Names[leg.Knee]}, {s.Names[leg.Ankle]}) is not a chain of parent and child joints; expected thigh → knee → ankle (→ toe), as on the model's skeleton", nameof(rig));
-                }
-
                 _channelJoint[2 * side] = leg.Ankle;
                 _channelJoint[2 * side + 1] = leg.HasToe ? leg.Toe : -1;
             }
 
             _globalPositions = new double[3 * s.JointCount];
             _globalRotations = new double[4 * s.JointCount];
-            _pinning = new LegPinning(rig);
             StandingHeights(rig, _maxPlantedHeight);
         }
 

@@ -24,8 +24,19 @@ namespace DeltaInterpolator.Core.Feet
         private readonly double[] _globalPositions;
         private readonly double[] _globalRotations;
 
+        /// <exception cref="ArgumentException">A leg is not a chain thigh → knee → ankle (→ toe): the solve rotates each joint about its parent.</exception>
         public LegPinning(FootRig rig)
         {
+            Skeleton s = rig.Skeleton;
+            for (int side = 0; side < 2; side++)
+            {
+                Leg leg = rig[side];
+                if (s.Parents[leg.Knee] != leg.Hip || s.Parents[leg.Ankle] != leg.Knee || (leg.HasToe && s.Parents[leg.Toe] != leg.Ankle))
+                {
+                    throw new ArgumentException($"the {(side == 0 ? "left" : "right")} leg ({s.Names[leg.Hip]}, {s.Names[leg.Knee]}, {s.Names[leg.Ankle]}) is not a chain of parent and child joints; expected thigh → knee → ankle (→ toe), as on the model's skeleton", nameof(rig));
+                }
+            }
+
             _rig = rig;
             _globalPositions = new double[3 * rig.Skeleton.JointCount];
             _globalRotations = new double[4 * rig.Skeleton.JointCount];

@@ -81,22 +81,17 @@ namespace DeltaInterpolator.Core.Feet
             _rig = rig ?? throw new ArgumentNullException(nameof(rig));
             _settings = settings ?? FootLockSettings.ForPlayback();
             _settings.Validate();
+            _pinning = new LegPinning(rig); // checks the leg chains
             Skeleton s = rig.Skeleton;
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                if (s.Parents[leg.Knee] != leg.Hip || s.Parents[leg.Ankle] != leg.Knee || (leg.HasToe && s.Parents[leg.Toe] != leg.Ankle))
-                {
-                    throw new ArgumentException($"the {(side == 0 ? "left" : "right")} leg is not a chain of parent and child joints; expected thigh → knee → ankle (→ toe)", nameof(rig));
-                }
-
                 _channelJoint[2 * side] = leg.Ankle;
                 _channelJoint[2 * side + 1] = leg.HasToe ? leg.Toe : -1;
                 _legReach[side] = Vector3D.Read(s.OffsetSpan, 3 * leg.Knee).Length + Vector3D.Read(s.OffsetSpan, 3 * leg.Ankle).Length;
             }
 
             FootLocker.StandingHeights(rig, _maxPlantedHeight);
-            _pinning = new LegPinning(rig);
             _localPositions = new double[3 * s.JointCount];
             s.OffsetSpan.CopyTo(_localPositions);
         }
