@@ -11,8 +11,10 @@ namespace DeltaInterpolator.Evaluation.Speed
     /// keys and the rest with 10) in the same rendered frame at 60 fps. Measures the main thread's cost of the
     /// N requests, the wall time until every character has its first and then all of its network frames when
     /// decoding runs as fast as it can (batched), the inference cost per rendered frame while all play
-    /// (the decoder's own work, batched vs one run per character, simulated clock, one frame decoded per
-    /// character per rendered frame; the whole step with every player's playback beside it), and, on a real 60 fps clock with the worker thread, how many rendered frames held a pose and
+    /// (the decoder's own work, batched vs one run per character, measured side by side with their frames
+    /// interleaved over three rounds of requests, simulated clock, one frame decoded per character per
+    /// rendered frame; the whole step with every player's playback beside it), and, on a real 60 fps clock
+    /// with the worker thread, how many rendered frames held a pose and
     /// how many model frames arrived after playback needed them.
     /// </summary>
     public static class CrowdBenchmark
@@ -104,41 +106,77 @@ namespace DeltaInterpolator.Evaluation.Speed
                 result.AllFramesMs = Math.Round(Ms(t0), 3);
             }
 
-            // 3. Inference per rendered frame while all play, simulated 60 fps clock: batched vs one run per character.
-            (double inference, double step) = FrameCost(loadLazyModel, characters, 256);
-            result.FrameMsBatched = Math.Round(inference, 4);
-            result.StepMsBatched = Math.Round(step, 4);
-            (inference, step) = FrameCost(loadLazyModel, characters, 1);
-            result.FrameMsUnbatched = Math.Round(inference, 4);
-            result.StepMsUnbatched = Math.Round(step, 4);
+            // 3. Inference per rendered frame while all play, simulated 60 fps clock: batched vs one run per character,
+            // side by side (their frames interleaved, so that whatever else the machine does weighs on both alike).
+            FrameCosts costs = FrameCost(loadLazyModel, characters);
+            result.FrameMsBatched = Math.Round(costs.BatchedInference, 4);
+            result.StepMsBatched = Math.Round(costs.BatchedStep, 4);
+            result.FrameMsUnbatched = Math.Round(costs.UnbatchedInference, 4);
+            result.StepMsUnbatched = Math.Round(costs.UnbatchedStep, 4);
             return result;
         }
 
-        // Per rendered frame while all play: the decoder's work (its pumps: gather, run, scatter) and the whole step
-        // (that and every player's playback, which batching does not change).
-        private static (double Inference, double Step) FrameCost(Func<Inbetweener> loadLazyModel, int characters, int maxBatch)
+        /// <summary>Rounds of requests whose frames are timed: one second of rendered frames each.</summary>
+        private const int FrameCostRounds = 3;
+
+        private readonly struct FrameCosts
         {
-            using var decoder = new MainThreadDecoder(loadLazyModel(), maxBatch, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
-            var crowd = new Crowd(decoder, characters);
-            crowd.Warm();
-            // A first round creates the batch tensors and bindings; the second is measured.
-            crowd.RequestAll();
-            crowd.PlayFor(1.3);
-            crowd.RequestAll();
-            double total = 0;
-            int frames = 0;
-            long pumped = decoder.Scheduler.PumpTicks;
-            double end = crowd.Time + 1.0;
-            while (crowd.Time < end)
+            public FrameCosts(double batchedInference, double batchedStep, double unbatchedInference, double unbatchedStep)
             {
-                long t0 = Stopwatch.GetTimestamp();
-                crowd.Step();
-                total += Ms(t0);
-                frames++;
+                BatchedInference = batchedInference;
+                BatchedStep = batchedStep;
+                UnbatchedInference = unbatchedInference;
+                UnbatchedStep = unbatchedStep;
             }
 
-            double inference = (decoder.Scheduler.PumpTicks - pumped) * 1000.0 / Stopwatch.Frequency;
-            return (inference / frames, total / frames);
+            public double BatchedInference { get; }
+            public double BatchedStep { get; }
+            public double UnbatchedInference { get; }
+            public double UnbatchedStep { get; }
+        }
+
+        // Per rendered frame while all play: the decoder's work (its pumps: gather, run, scatter) and the whole step
+        // (that and every player's playback, which batching does not change). Two identical crowds, one decoding every
+        // character's work in one run per graph and shape, the other one run per character, stepped in turn frame by
+        // frame over FrameCostRounds rounds of simultaneous requests.
+        private static FrameCosts FrameCost(Func<Inbetweener> loadLazyModel, int characters)
+        {
+            using var batched = new MainThreadDecoder(loadLazyModel(), 256, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
+            using var unbatched = new MainThreadDecoder(loadLazyModel(), 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
+            var crowds = new[] { new Crowd(batched, characters), new Crowd(unbatched, characters) };
+            var decoders = new[] { batched, unbatched };
+            foreach (Crowd crowd in crowds)
+            {
+                crowd.Warm();
+                // A first round creates the batch tensors and bindings; the later ones are measured.
+                crowd.RequestAll();
+                crowd.PlayFor(1.3);
+            }
+
+            var steps = new double[2];
+            var pumped = new long[2];
+            int frames = 0;
+            for (int round = 0; round < FrameCostRounds; round++)
+            {
+                foreach (Crowd crowd in crowds) crowd.RequestAll();
+                double end = crowds[0].Time + 1.0;
+                while (crowds[0].Time < end)
+                {
+                    for (int k = 0; k < 2; k++)
+                    {
+                        long p0 = decoders[k].Scheduler.PumpTicks;
+                        long t0 = Stopwatch.GetTimestamp();
+                        crowds[k].Step();
+                        steps[k] += Ms(t0);
+                        pumped[k] += decoders[k].Scheduler.PumpTicks - p0;
+                    }
+
+                    frames++;
+                }
+            }
+
+            double Per(long ticks) => ticks * 1000.0 / Stopwatch.Frequency / frames;
+            return new FrameCosts(Per(pumped[0]), steps[0] / frames, Per(pumped[1]), steps[1] / frames);
         }
 
         private static double Ms(long since) => (Stopwatch.GetTimestamp() - since) * 1000.0 / Stopwatch.Frequency;
