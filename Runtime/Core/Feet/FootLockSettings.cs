@@ -82,8 +82,9 @@ namespace DeltaInterpolator.Core.Feet
         /// slide a little more than a bake's keys let them, and nothing later is known when a contact starts, so a foot
         /// is taken as planted a little higher and faster than in a bake; a hold ends sooner (HoldDistance) and catches up
         /// with the motion faster (EaseReach, EaseSeconds), since its end is not planned ahead. Chosen on a LaFAN1
-        /// subject-1 walk in the frame-loop test (skating of 1 s transitions × 0.58 of unlocked with the bake's
-        /// settings, × 0.52 with these; 0.5 s ones × 0.99 and × 0.69).
+        /// subject-1 walk in the frame-loop test with the CMU model of the time (skating of 1 s transitions × 0.58
+        /// of unlocked with the bake's settings, × 0.52 with these; 0.5 s ones × 0.99 and × 0.69); with the model
+        /// shipped after it, × 0.59 and × 0.81.
         /// </summary>
         public static FootLockSettings ForPlayback() => new FootLockSettings
         {
