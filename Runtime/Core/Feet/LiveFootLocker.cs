@@ -28,8 +28,11 @@ namespace DeltaInterpolator.Core.Feet
     /// touch-down unless they start where the joint is (nothing later is known yet); every contact eases out over the
     /// same time after it ends, trailing the motion by at most <see cref="FootLockSettings.EaseReach"/> and catching up
     /// by at most that much per ease time.</para>
-    /// <para><b>The target is never changed.</b> A contact not on the target's spot eases out before the target
-    /// time, so the last filled frames meet the target pose; a target beyond the leg's reach
+    /// <para><b>The target is never changed.</b> Over the last <see cref="FootLockSettings.EaseSeconds"/> a hold
+    /// within the hold distance of a spot the target plants moves onto that spot; any other hold eases out before
+    /// the target time; so the last filled frames meet the target pose. A heel or toe landing on the target's spot
+    /// brings the other down on the target's footprint; a held foot's toe never goes more than 1 % of a leg below
+    /// its planted height (<see cref="LegPinning"/>'s toe floor); a target beyond the leg's reach
     /// (<see cref="FootLockSettings.MaxReach"/>) releases the joint instead of stretching the leg.</para>
     /// <para>Times are seconds, so the same settings work at any frame rate. Allocation-free after construction;
     /// one instance per character, not thread-safe.</para>
