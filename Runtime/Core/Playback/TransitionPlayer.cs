@@ -31,6 +31,9 @@ namespace DeltaInterpolator.Core.Playback
     /// at full weight, so the motion stays continuous; the interrupted request completes with
     /// <see cref="TransitionCompletion.ReachedTarget"/> false. After the target, the weight eases back to
     /// the character's animation over <see cref="PlaybackSettings.BlendOutSeconds"/>.</para>
+    /// <para>With <see cref="PlaybackSettings.LockFeet"/> (the default) each pose the transition shows has its
+    /// planted feet held and its legs solved (<see cref="Feet.LiveFootLocker"/>), after the SLERP → network
+    /// ease-in and before it is mapped onto the character.</para>
     /// <para>Main thread only. <see cref="BeginFrame"/>, <see cref="Record"/> and <see cref="Step"/>
     /// allocate nothing.</para>
     /// </remarks>
