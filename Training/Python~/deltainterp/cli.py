@@ -140,6 +140,9 @@ def _train(sub) -> None:
     p.add_argument("--warmup", type=int, default=500, help="linear warm-up steps")
     p.add_argument("--decay-at", type=float, default=0.8, help="fraction of --steps after which lr ×0.1")
     p.add_argument("--reconstruction-scale", type=float, default=1.0, help="weight of the key-frame loss")
+    p.add_argument("--foot-contact-weight", type=float, default=0.0,
+                   help="weight of a loss on the predicted foot joints' horizontal speed (model units per second) on "
+                        "missing frames where the truth's feet are planted (default 0: off)")
     p.add_argument("--mirror", action="store_true", help="augment with left/right mirrored windows")
     p.add_argument("--random-yaw", action="store_true", help="augment with a random rotation about Y")
     p.add_argument("--seed", type=int, default=0)
@@ -422,7 +425,8 @@ def main(argv: Optional[List[str]] = None) -> int:
                               max_minutes=args.max_minutes, threads=args.threads, min_past=args.min_past,
                               longest_past_share=args.longest_past_share, uniform_past=args.uniform_past,
                               init_from=args.init_from, min_gap=args.min_gap, max_gap=args.max_gap,
-                              chained_share=args.chained_share, average_from=args.average_from)
+                              chained_share=args.chained_share, average_from=args.average_from,
+                              foot_contact_weight=args.foot_contact_weight)
             path = train(cfg)
             print(f"checkpoint: {path}")
             return 0

@@ -29,6 +29,74 @@ class SkeletonTensors:
     unit_scale: float
     facing_local_axis: Sequence[float] = (0.0, 1.0, 0.0)
     facing_target_axis: Sequence[float] = (1.0, 0.0, 0.0)
+    foot_joints: Sequence[int] = ()   # ankle and toe of each leg (the foot-contact loss and skating measure)
+    leg_length: float = 0.0           # model units (see leg_length below)
+    frame_time: float = 1.0 / 30.0    # seconds per frame
+
+
+# The C# foot-skating measure's contact rule (Runtime/Evaluation/Baking/FootSkating.cs).
+CONTACT_HEIGHT = 0.03   # leg lengths above the ground
+CONTACT_SPEED = 0.15    # leg lengths per second
+FOOT_JOINT_NAMES = ("LeftFoot", "LeftToe", "RightFoot", "RightToe")
+
+
+def leg_length(names: Sequence[str], offsets) -> float:
+    """The root's height above its lowest joint in the model's reference T-pose (C# SkeletonMap.LegLength on
+    ReferencePose.ModelTPose), in the offsets' units: thigh + shin straight down, plus the ankle→toe bone,
+    which that pose points 30° down (half its length). The small hip→thigh offset is left out (about 2 %
+    of a leg); the mean of both legs. 0 when the skeleton lacks the LaFAN1 leg joints."""
+    import math
+    total = []
+    for side in ("Left", "Right"):
+        try:
+            bones = [offsets[list(names).index(side + n)] for n in ("Leg", "Foot", "Toe")]
+        except ValueError:
+            return 0.0
+        lengths = [math.sqrt(sum(float(v) ** 2 for v in b)) for b in bones]
+        total.append(lengths[0] + lengths[1] + 0.5 * lengths[2])
+    return sum(total) / len(total)
+
+
+def foot_joint_indices(names: Sequence[str]) -> Tuple[int, ...]:
+    """Indices of FOOT_JOINT_NAMES in `names` (empty when any is missing)."""
+    if not all(n in names for n in FOOT_JOINT_NAMES):
+        return ()
+    return tuple(list(names).index(n) for n in FOOT_JOINT_NAMES)
+
+
+def _horizontal_speed(feet: Tensor, frame_time: float) -> Tensor:
+    """(B, F, K, 3) positions of a span (key, filled frames, key) → (B, F - 2, K) horizontal (X, Z) speed
+    of the filled frames, central differences, units per second."""
+    d = feet[:, 2:] - feet[:, :-2]
+    eps = 1e-12  # a finite gradient at zero speed; subtracted back so a still joint scores exactly 0
+    return ((d[..., 0] ** 2 + d[..., 2] ** 2 + eps).sqrt() - eps ** 0.5) / (2.0 * frame_time)
+
+
+def foot_contact(gt_feet: Tensor, leg: float, frame_time: float) -> Tensor:
+    """(B, F - 2, K) mask of the filled frames' planted truth foot joints: within CONTACT_HEIGHT leg lengths
+    above the span's lowest foot-joint height and slower than CONTACT_SPEED leg lengths per second
+    (`gt_feet`: (B, F, K, 3), the span from the key before the gap to the key after it)."""
+    ground = gt_feet[..., 1].amin(dim=(1, 2), keepdim=True)
+    low = gt_feet[:, 1:-1, :, 1] <= ground + CONTACT_HEIGHT * leg
+    slow = _horizontal_speed(gt_feet, frame_time) < CONTACT_SPEED * leg
+    return low & slow
+
+
+def foot_skating(pred_feet: Tensor, gt_feet: Tensor, leg: float, frame_time: float) -> Tuple[Tensor, Tensor]:
+    """(sum of the prediction's horizontal speed on the truth's planted samples, their count); speeds in
+    units per second. `pred_feet` and `gt_feet`: (B, F, K, 3) over the same span (keys at both ends)."""
+    mask = foot_contact(gt_feet, leg, frame_time).to(pred_feet.dtype)
+    speed = _horizontal_speed(pred_feet, frame_time)
+    return (speed * mask).sum(), mask.sum()
+
+
+def span_feet(pred_pos: Tensor, gt_pos: Tensor, before: Tensor, after: Tensor, feet: Sequence[int]):
+    """Foot-joint global positions (B, N + 2, K, 3) of the span key, filled frames, key: the prediction's
+    filled frames between the truth's keys, and the truth's."""
+    f = list(feet)
+    pred = torch.cat((before[:, None, f], pred_pos[:, :, f], after[:, None, f]), 1)
+    gt = torch.cat((before[:, None, f], gt_pos[:, :, f], after[:, None, f]), 1)
+    return pred, gt
 
 
 @dataclass
@@ -102,22 +170,44 @@ def predict(model: DeltaInterpolator, batch: TransitionBatch, with_keys: bool):
 
 
 def l1_global(pred_root: Tensor, pred_rot: Tensor, gt_root: Tensor, gt_rot: Tensor,
-              skeleton: SkeletonTensors):
+              skeleton: SkeletonTensors, positions: bool = False):
     pq, pp = forward_kinematics(pred_rot, pred_root, skeleton.offsets, skeleton.parents)
     gq, gp = forward_kinematics(gt_rot, gt_root, skeleton.offsets, skeleton.parents)
     pq = quaternions.align_hemisphere(pq, gq)
+    if positions:
+        return (pq - gq).abs().mean(), (pp - gp).abs().mean(), pp, gp
     return (pq - gq).abs().mean(), (pp - gp).abs().mean()
 
 
 def loss(model: DeltaInterpolator, batch: TransitionBatch, skeleton: SkeletonTensors,
-         reconstruction_scale: float = 1.0, quat_scale: float = 10.0, position_scale: float = 10.0
-         ) -> Dict[str, Tensor]:
+         reconstruction_scale: float = 1.0, quat_scale: float = 10.0, position_scale: float = 10.0,
+         foot_contact_weight: float = 0.0) -> Dict[str, Tensor]:
+    """The paper's losses; with foot_contact_weight > 0 also that weight times the mean horizontal speed
+    (model units per second) of the predicted foot joints on the missing frames where the truth's are
+    planted (the C# foot-skating contact rule), reported as "foot"."""
     layout = batch.layout
     root, rot, key_root, key_rot = predict(model, batch, with_keys=reconstruction_scale > 0)
     q_idx = torch.tensor(layout.query_frames)
-    lq, lp = l1_global(root, rot, batch.positions[:, q_idx], batch.rotations[:, q_idx], skeleton)
+    feet_on = foot_contact_weight > 0
+    if feet_on and (not skeleton.foot_joints or not skeleton.leg_length > 0):
+        raise ValueError("the foot-contact loss needs the skeleton's foot joints (LeftFoot, LeftToe, RightFoot, "
+                         "RightToe) and a leg length; expected a LaFAN1-named skeleton")
+    lq, lp, *positions = l1_global(root, rot, batch.positions[:, q_idx], batch.rotations[:, q_idx], skeleton,
+                                   positions=feet_on)
     out = {"quat": lq, "pos": lp}
     total = quat_scale * lq + position_scale * lp
+    if feet_on:
+        pp, gp = positions
+        r, target = layout.past - 1, layout.past + layout.gap
+        ends = torch.tensor([r, target])
+        _, kp = forward_kinematics(batch.rotations[:, ends], batch.positions[:, ends], skeleton.offsets,
+                                   skeleton.parents)
+        kp = kp.to(pp.dtype)
+        pred_feet, gt_feet = span_feet(pp, gp, kp[:, 0], kp[:, 1], skeleton.foot_joints)
+        speed, count = foot_skating(pred_feet, gt_feet, skeleton.leg_length, skeleton.frame_time)
+        foot = speed / count.clamp_min(1.0)
+        out["foot"] = foot
+        total = total + foot_contact_weight * foot
     if key_root is not None:
         k_idx = torch.tensor(layout.key_frames)
         kq, kp = l1_global(key_root, key_rot, batch.positions[:, k_idx], batch.rotations[:, k_idx], skeleton)

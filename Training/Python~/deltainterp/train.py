@@ -24,7 +24,8 @@ from .data import MotionPack, load_pack, split_windows, training_ranges, windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
 from .localize import unlocalize
-from .objective import SkeletonTensors, loss, make_batch, predict
+from .objective import (SkeletonTensors, foot_joint_indices, foot_skating, leg_length, loss, make_batch, predict,
+                        span_feet)
 from .sampler import TransitionSampler
 
 
@@ -56,6 +57,7 @@ class TrainConfig:
     chained_share: float = 0.0  # share of batches whose past frames are the network's own output (draw_chained)
     init_from: str = ""         # start from these weights (an exported .onnx or a checkpoint.pt), not random
     average_from: int = 0       # 0 = off; else the run's weights are the mean of every step's after this one
+    foot_contact_weight: float = 0.0  # 0 = off; else × the planted-foot speed loss (objective.loss)
 
 
 def learning_rate(cfg: TrainConfig, step: int) -> float:
@@ -65,9 +67,12 @@ def learning_rate(cfg: TrainConfig, step: int) -> float:
 
 
 def skeleton_tensors(pack: MotionPack, unit_scale: float, device) -> SkeletonTensors:
+    names = list(pack.skeleton.names)
     return SkeletonTensors(list(pack.skeleton.parents),
                            torch.tensor(pack.skeleton.offsets * unit_scale, dtype=torch.float32, device=device),
-                           unit_scale)
+                           unit_scale, foot_joints=foot_joint_indices(names),
+                           leg_length=leg_length(names, pack.skeleton.offsets) * unit_scale,
+                           frame_time=float(pack.frame_time))
 
 
 class WindowSource:
@@ -164,7 +169,9 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
     L2Q is the benchmark's (after hemisphere alignment to the GT); L2P divides by the per-coordinate std of
     the validation GT instead of the official statistics, so it needs no statistics file. With past < 10
     the network sees only the last `past` of the 10 context frames (same target frame, as the benchmark's
-    --past-frames)."""
+    --past-frames). With the skeleton's feet known, also `{model,slerp}_skate_{n}`: the mean horizontal
+    speed (leg lengths per second) of the foot joints on the missing frames where the truth's are planted
+    (the C# FootSkating contact rule, ground = the span's lowest foot-joint height)."""
     model.eval()
     sampler = TransitionSampler(past=past)
     roots = torch.from_numpy(pack.root_positions)
@@ -181,6 +188,11 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
                                         skeleton.parents)
             std = gp.reshape(-1, gp.shape[-2] * 3).std(0).clamp_min(1e-6)
             root, rot, _, _ = predict(model, batch, with_keys=False)
+            feet = list(skeleton.foot_joints) if skeleton.leg_length > 0 else []
+            if feet:
+                r, target = layout.past - 1, layout.past + layout.gap
+                _, kp = forward_kinematics(batch.rotations[:, [r, target]], batch.positions[:, [r, target]],
+                                           skeleton.offsets, skeleton.parents)
             for name, (r, q) in {"model": (root, rot), "slerp": (batch.base_root, batch.base_rotations)}.items():
                 if name == "slerp" and model.config.output_delta_mode != "slerp":
                     continue
@@ -190,6 +202,11 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
                 l2p = ((pp - gp).reshape(*pp.shape[:2], -1) / std).norm(dim=-1).mean().item()
                 out[f"{name}_l2q_{n}"] = l2q
                 out[f"{name}_l2p_{n}"] = l2p
+                if feet:
+                    pf, gf = span_feet(pp, gp, kp[:, 0], kp[:, 1], feet)
+                    total, count = foot_skating(pf, gf, skeleton.leg_length, skeleton.frame_time)
+                    if count > 0:
+                        out[f"{name}_skate_{n}"] = (total / count).item() / skeleton.leg_length
     model.train()
     return out
 
@@ -219,7 +236,8 @@ RESUME_SETTINGS = {"batch_size": "--batch-size", "peak_lr": "--lr", "warmup_step
                    "unit_scale": "unit_scale", "mirror": "--mirror", "random_yaw": "--random-yaw",
                    "min_past": "--min-past", "longest_past_share": "--longest-past-share",
                    "uniform_past": "--uniform-past", "min_gap": "--min-gap", "max_gap": "--max-gap",
-                   "chained_share": "--chained-share", "average_from": "--average-from"}
+                   "chained_share": "--chained-share", "average_from": "--average-from",
+                   "foot_contact_weight": "--foot-contact-weight"}
 
 
 def run_checkpoint(out: Path) -> Optional[Path]:
@@ -412,6 +430,8 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device,
                           ranges=training_ranges(pack))
     source.starts_for(10 + cfg.max_gap + 1 + (cfg.max_gap + 1 if cfg.chained_share > 0 else 0))  # refuse a --max-gap no file can give before training starts
+    if not (cfg.foot_contact_weight >= 0 and math.isfinite(cfg.foot_contact_weight)):
+        raise ValueError(f"--foot-contact-weight {cfg.foot_contact_weight}; expected a weight ≥ 0 (0: off)")
     if not 0.0 <= cfg.chained_share <= 1.0:
         raise ValueError(f"--chained-share {cfg.chained_share}; expected a share from 0 to 1")
     # Long gaps are validated on windows of their own length (fewer files have such tails).
@@ -419,7 +439,9 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     long_val = {n: split_windows(pack, validation_length=10 + n + 1)[1] for n in long_gaps}
 
     log_path = out / "log.csv"
-    fields = ["step", "lr", "total", "quat", "pos", "key_quat", "key_pos", "seconds"]
+    # Fixed columns for the run (--foot-contact-weight must match on resume, so the header stays right).
+    losses = ["total", "quat", "pos", "key_quat", "key_pos"] + (["foot"] if cfg.foot_contact_weight > 0 else [])
+    fields = ["step", "lr"] + losses + ["seconds"]
     bar = None
     if rank == 0 and progress:
         from tqdm import tqdm
@@ -465,7 +487,7 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         else:
             layout, roots, quats = source.draw(rng, cfg.batch_size)
         batch = make_batch(roots, quats, layout, skeleton, model_cfg.output_delta_mode, model_cfg.input_delta_mode)
-        terms = loss(net, batch, skeleton, cfg.reconstruction_scale)
+        terms = loss(net, batch, skeleton, cfg.reconstruction_scale, foot_contact_weight=cfg.foot_contact_weight)
         optimizer.zero_grad(set_to_none=True)
         terms["total"].backward()
         optimizer.step()
@@ -484,7 +506,7 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             bar.update(1)
             bar.set_postfix(loss=f"{window_losses[-1]['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
         if rank == 0 and (step % 50 == 0 or step == cfg.steps):
-            row = {k: float(np.mean([w.get(k, 0.0) for w in window_losses])) for k in fields[2:7]}
+            row = {k: float(np.mean([w.get(k, 0.0) for w in window_losses])) for k in losses}
             row.update(step=step, lr=lr, seconds=round(time.time() - started, 1))
             text = io.StringIO(newline="")
             # Fixed columns: validation metrics live in validation.jsonl. (Appending them here gave
