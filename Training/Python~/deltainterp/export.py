@@ -120,13 +120,9 @@ def example_inputs(model: DeltaInterpolator, kind: str, keys: int = 11, queries:
     gaps = list(gap) if isinstance(gap, (list, tuple)) else [gap]
     if not batched and len(gaps) != 1:
         raise ValueError("the version 1 layout has batch 1")
-    b, j, past = len(gaps), model.config.joints, keys - 1
+    b, j = len(gaps), model.config.joints
     feats = torch.randn(b, keys, C.FEATURES_PER_JOINT * j, generator=g) * 0.3
-    key_idx = torch.tensor([list(range(past)) + [past + n] for n in gaps], dtype=torch.int64)
-    query_idx = torch.stack([torch.arange(past, past + queries, dtype=torch.int64)] * b)
-    gap_t = torch.tensor(gaps, dtype=torch.int64)
-    if not batched:
-        key_idx, query_idx = key_idx[0], query_idx[0]
+    key_idx, query_idx, gap_t = (torch.from_numpy(a) for a in C.example_frame_indices(keys, queries, gaps, batched))
     if kind == "keys":
         return {C.KEY_FEATURES: feats, C.KEY_FRAME_INDICES: key_idx, C.GAP_LENGTH: gap_t}
     inputs = {C.KEY_FEATURES: feats, C.KEY_FRAME_INDICES: key_idx, C.QUERY_FRAME_INDICES: query_idx,

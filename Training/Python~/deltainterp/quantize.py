@@ -228,14 +228,8 @@ def probe_inputs(meta: Dict, kind: str, keys: int = 11, queries: int = 8, gaps=(
     batched = int(meta.get("contract_version", C.CONTRACT_VERSION)) >= 2
     gaps = list(gaps) if batched else [gaps[0]]
     j = len(meta["skeleton"]["names"])
-    past = keys - 1
-    b = len(gaps)
-    feats = (rng.standard_normal((b, keys, C.FEATURES_PER_JOINT * j)) * 0.3).astype(np.float32)
-    key_idx = np.array([list(range(past)) + [past + n] for n in gaps], dtype=np.int64)
-    query_idx = np.stack([np.arange(past, past + queries, dtype=np.int64)] * b)
-    gap = np.array(gaps, dtype=np.int64)
-    if not batched:
-        key_idx, query_idx = key_idx[0], query_idx[0]
+    feats = (rng.standard_normal((len(gaps), keys, C.FEATURES_PER_JOINT * j)) * 0.3).astype(np.float32)
+    key_idx, query_idx, gap = C.example_frame_indices(keys, queries, gaps, batched)
     if kind == "keys":
         return {C.KEY_FEATURES: feats, C.KEY_FRAME_INDICES: key_idx, C.GAP_LENGTH: gap}
     if kind == "frame":
