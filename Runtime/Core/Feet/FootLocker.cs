@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Kinematics;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -51,8 +50,6 @@ namespace DeltaInterpolator.Core.Feet
 
         private readonly FootRig _rig;
         private readonly FootLockSettings _settings;
-        private readonly double[] _globalPositions;
-        private readonly double[] _globalRotations;
         private readonly int[] _channelJoint = new int[ChannelCount];
         private readonly double[] _maxPlantedHeight = new double[ChannelCount];
         private readonly double[] _plantedHeight = new double[ChannelCount];
@@ -87,16 +84,7 @@ namespace DeltaInterpolator.Core.Feet
             _settings = settings ?? new FootLockSettings();
             _settings.Validate();
             _pinning = new LegPinning(rig); // checks the leg chains
-            Skeleton s = rig.Skeleton;
-            for (int side = 0; side < 2; side++)
-            {
-                Leg leg = rig[side];
-                _channelJoint[2 * side] = leg.Ankle;
-                _channelJoint[2 * side + 1] = leg.HasToe ? leg.Toe : -1;
-            }
-
-            _globalPositions = new double[3 * s.JointCount];
-            _globalRotations = new double[4 * s.JointCount];
+            ChannelJoints(rig, _channelJoint);
             StandingHeights(rig, _maxPlantedHeight);
         }
 
@@ -258,22 +246,23 @@ namespace DeltaInterpolator.Core.Feet
             for (int f = 0; f < _frames; f++)
             {
                 ReadOnlySpan<double> lp = clip.LocalPositions.AsSpan(clip.PositionIndex(f, 0), 3 * j);
-                ForwardKinematics.ComputeFrame(s.ParentSpan, lp, Vector3D.Read(lp, 0), clip.LocalRotations.AsSpan(clip.RotationIndex(f, 0), 4 * j), _globalPositions, _globalRotations);
+                _pinning.ComputeGlobals(lp, clip.LocalRotations.AsSpan(clip.RotationIndex(f, 0), 4 * j));
+                double[] globals = _pinning.GlobalPositions;
                 for (int c = 0; c < ChannelCount; c++)
                 {
-                    if (_channelJoint[c] >= 0) Array.Copy(_globalPositions, 3 * _channelJoint[c], _feet, (c * cap + f) * 3, 3);
+                    if (_channelJoint[c] >= 0) Array.Copy(globals, 3 * _channelJoint[c], _feet, (c * cap + f) * 3, 3);
                 }
 
                 for (int side = 0; side < 2; side++)
                 {
                     Leg leg = _rig[side];
-                    Array.Copy(_globalPositions, 3 * leg.Hip, _hips, (side * cap + f) * 3, 3);
-                    Vector3D toe = leg.HasToe ? Vector3D.Read(_globalPositions, 3 * leg.Toe) - Vector3D.Read(_globalPositions, 3 * leg.Ankle) : Vector3D.Zero;
+                    Array.Copy(globals, 3 * leg.Hip, _hips, (side * cap + f) * 3, 3);
+                    Vector3D toe = leg.HasToe ? Vector3D.Read(globals, 3 * leg.Toe) - Vector3D.Read(globals, 3 * leg.Ankle) : Vector3D.Zero;
                     toe.Write(_toeVector, (side * cap + f) * 3);
                     if (f == 0)
                     {
-                        _thigh[side] = (Vector3D.Read(_globalPositions, 3 * leg.Knee) - Vector3D.Read(_globalPositions, 3 * leg.Hip)).Length;
-                        _shin[side] = (Vector3D.Read(_globalPositions, 3 * leg.Ankle) - Vector3D.Read(_globalPositions, 3 * leg.Knee)).Length;
+                        _thigh[side] = (Vector3D.Read(globals, 3 * leg.Knee) - Vector3D.Read(globals, 3 * leg.Hip)).Length;
+                        _shin[side] = (Vector3D.Read(globals, 3 * leg.Ankle) - Vector3D.Read(globals, 3 * leg.Knee)).Length;
                     }
                 }
             }
@@ -686,6 +675,17 @@ namespace DeltaInterpolator.Core.Feet
             if (w <= _weight[row + f]) return;
             _weight[row + f] = w;
             Copy(_anchor, (row + edge) * 3, _anchor, (row + f) * 3);
+        }
+
+        /// <summary>The joint of each contact channel (ankle, toe per side; −1 for a toe the rig lacks).</summary>
+        internal static void ChannelJoints(FootRig rig, int[] joints)
+        {
+            for (int side = 0; side < 2; side++)
+            {
+                Leg leg = rig[side];
+                joints[2 * side] = leg.Ankle;
+                joints[2 * side + 1] = leg.HasToe ? leg.Toe : -1;
+            }
         }
 
         /// <summary>

@@ -86,11 +86,10 @@ namespace DeltaInterpolator.Core.Feet
             _settings.Validate();
             _pinning = new LegPinning(rig); // checks the leg chains
             Skeleton s = rig.Skeleton;
+            FootLocker.ChannelJoints(rig, _channelJoint);
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                _channelJoint[2 * side] = leg.Ankle;
-                _channelJoint[2 * side + 1] = leg.HasToe ? leg.Toe : -1;
                 _legReach[side] = Vector3D.Read(s.OffsetSpan, 3 * leg.Knee).Length + Vector3D.Read(s.OffsetSpan, 3 * leg.Ankle).Length;
             }
 

@@ -108,7 +108,7 @@ namespace DeltaInterpolator.Evaluation.Speed
 
             // 3. Inference per rendered frame while all play, simulated 60 fps clock: batched vs one run per character,
             // side by side (their frames interleaved, so that whatever else the machine does weighs on both alike).
-            FrameCosts costs = FrameCost(loadLazyModel, characters);
+            var costs = FrameCost(loadLazyModel, characters);
             result.FrameMsBatched = Math.Round(costs.BatchedInference, 4);
             result.StepMsBatched = Math.Round(costs.BatchedStep, 4);
             result.FrameMsUnbatched = Math.Round(costs.UnbatchedInference, 4);
@@ -119,27 +119,11 @@ namespace DeltaInterpolator.Evaluation.Speed
         /// <summary>Rounds of requests whose frames are timed: one second of rendered frames each.</summary>
         private const int FrameCostRounds = 3;
 
-        private readonly struct FrameCosts
-        {
-            public FrameCosts(double batchedInference, double batchedStep, double unbatchedInference, double unbatchedStep)
-            {
-                BatchedInference = batchedInference;
-                BatchedStep = batchedStep;
-                UnbatchedInference = unbatchedInference;
-                UnbatchedStep = unbatchedStep;
-            }
-
-            public double BatchedInference { get; }
-            public double BatchedStep { get; }
-            public double UnbatchedInference { get; }
-            public double UnbatchedStep { get; }
-        }
-
         // Per rendered frame while all play: the decoder's work (its pumps: gather, run, scatter) and the whole step
         // (that and every player's playback, which batching does not change). Two identical crowds, one decoding every
         // character's work in one run per graph and shape, the other one run per character, stepped in turn frame by
         // frame over FrameCostRounds rounds of simultaneous requests.
-        private static FrameCosts FrameCost(Func<Inbetweener> loadLazyModel, int characters)
+        private static (double BatchedInference, double BatchedStep, double UnbatchedInference, double UnbatchedStep) FrameCost(Func<Inbetweener> loadLazyModel, int characters)
         {
             using var batched = new MainThreadDecoder(loadLazyModel(), 256, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
             using var unbatched = new MainThreadDecoder(loadLazyModel(), 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
@@ -176,7 +160,7 @@ namespace DeltaInterpolator.Evaluation.Speed
             }
 
             double Per(long ticks) => ticks * 1000.0 / Stopwatch.Frequency / frames;
-            return new FrameCosts(Per(pumped[0]), steps[0] / frames, Per(pumped[1]), steps[1] / frames);
+            return (Per(pumped[0]), steps[0] / frames, Per(pumped[1]), steps[1] / frames);
         }
 
         private static double Ms(long since) => (Stopwatch.GetTimestamp() - since) * 1000.0 / Stopwatch.Frequency;
