@@ -9,6 +9,7 @@ using System.Runtime.CompilerServices;
 [assembly: InternalsVisibleTo("DeltaInterpolator.OnnxRuntime.Tests")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation.Tests")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation.OnnxRuntime.Tests")]
+[assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation.OnnxRuntime.Tests")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.Evaluation")]
 [assembly: InternalsVisibleTo("DeltaInterpolator.Editor")]
 #if !UNITY_5_3_OR_NEWER

@@ -132,9 +132,12 @@ namespace DeltaInterpolator.Core.Feet
         /// <summary>Plans and locks every non-key frame of <paramref name="clip"/> in place.</summary>
         /// <param name="clip">Motion on the rig's skeleton (e.g. a bake: key frames and filled frames).</param>
         /// <param name="keys">Frame indices of <paramref name="clip"/> that are keys (increasing, at least one): never changed, and the source of the ground.</param>
-        public void Lock(MotionClip clip, IReadOnlyList<int> keys)
+        public void Lock(MotionClip clip, IReadOnlyList<int> keys) => LockWithContacts(clip, keys, null);
+
+        /// <summary><see cref="Lock"/> with the contacts given (<see cref="PlanWithContacts"/>), or labelled when null.</summary>
+        internal void LockWithContacts(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts)
         {
-            Plan(clip, keys);
+            PlanWithContacts(clip, keys, contacts);
             for (int f = 0; f < _frames; f++)
             {
                 if (_isKey[f]) continue;
@@ -146,9 +149,19 @@ namespace DeltaInterpolator.Core.Feet
         /// Labels contacts and chooses where each planted joint is held on every frame of <paramref name="clip"/>,
         /// without changing it; <see cref="LockFrame"/> then applies one frame.
         /// </summary>
-        public void Plan(MotionClip clip, IReadOnlyList<int> keys)
+        public void Plan(MotionClip clip, IReadOnlyList<int> keys) => PlanWithContacts(clip, keys, null);
+
+        /// <summary>
+        /// <see cref="Plan"/> with the contacts given instead of labelled (when not null): frames ×
+        /// <see cref="ChannelCount"/> flags (a run of set flags is one contact). Everything after labelling — where a
+        /// joint is held, reach, easing — is the same. The analysis of the locker alone (Tools~/Tests'
+        /// FootLockingAnalysis) gives it the truth's contacts, to separate what locking reaches with contacts known
+        /// from what labelling them from the filled motion loses.
+        /// </summary>
+        internal void PlanWithContacts(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts)
         {
             if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (contacts != null && contacts.Length != clip.FrameCount * ChannelCount) throw new ArgumentException($"{contacts.Length} contact flags; expected frames × {ChannelCount} = {clip.FrameCount * ChannelCount}", nameof(contacts));
             if (keys == null || keys.Count == 0) throw new ArgumentException("expected at least one key frame", nameof(keys));
             if (!clip.Skeleton.HasSameHierarchy(_rig.Skeleton)) throw new ArgumentException("the clip is not on the rig's skeleton", nameof(clip));
             int frames = clip.FrameCount;
@@ -183,6 +196,7 @@ namespace DeltaInterpolator.Core.Feet
                 int next = 1;
                 LabelFromKeys(c, leg, keys, ease, dt, ref next);
                 LabelFree(c, leg, dt, minFrames, ref next);
+                if (contacts != null) Given(c, contacts, ref next);
                 Separate(c, ease);
                 Anchor(c, leg);
                 PullIntoReach(c);
@@ -455,6 +469,18 @@ namespace DeltaInterpolator.Core.Feet
                 }
 
                 planted = now;
+            }
+        }
+
+        /// <summary>Channel c's contacts from <paramref name="contacts"/> (frames × channels) instead of the labels: one contact per run of set flags.</summary>
+        private void Given(int c, bool[] contacts, ref int next)
+        {
+            int row = c * _capacity;
+            for (int f = 0; f < _frames; f++)
+            {
+                _segment[row + f] = !contacts[f * ChannelCount + c] ? 0
+                    : f > 0 && _segment[row + f - 1] != 0 ? _segment[row + f - 1]
+                    : next++;
             }
         }
 
