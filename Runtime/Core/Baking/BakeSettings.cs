@@ -46,6 +46,14 @@ namespace DeltaInterpolator.Core.Baking
         /// </summary>
         public Feet.FootLockSettings? FootLocking { get; set; }
 
+        /// <summary>A copy with <see cref="FootLocking"/> replaced (the bake workflow locks a retargeted rig's feet on the rig itself).</summary>
+        internal BakeSettings WithFootLocking(Feet.FootLockSettings? footLocking)
+        {
+            var copy = (BakeSettings)MemberwiseClone();
+            copy.FootLocking = footLocking;
+            return copy;
+        }
+
         /// <summary>Name used in warnings and refusals, e.g. the model file.</summary>
         public string Name { get; set; } = "the in-betweener";
 

@@ -95,7 +95,7 @@ namespace DeltaInterpolator.Cli.Baking
 
         public readonly Option<string> _feet = new Option<string>("--feet")
         {
-            Description = "Foot locking of both methods' filled frames before they are mapped back: 'lock' holds planted feet still (two-bone IK, key frames untouched), 'off' leaves them as filled (default: lock). Foot skating is reported either way.",
+            Description = "Foot locking of both methods' filled frames, on the skeleton written (a retargeted input's own, after mapping back): 'lock' holds planted feet still (two-bone IK, key frames untouched), 'off' leaves them as filled (default: lock). Foot skating is reported either way.",
             HelpName = "lock|off",
             // On by default: with the default (CMU) model locking keeps the position error within 2 % of 'off' on every
             // measured bake (demo clip −0.4 %, worst +1.1 %) and cuts the demo clip's foot skating 0.265 → 0.148 leg/s.
