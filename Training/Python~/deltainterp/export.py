@@ -88,12 +88,17 @@ class FrameGraph(nn.Module):
     def forward(self, key_memory: Tensor, query_frame_indices: Tensor, gap_length: Tensor,
                 query_features: Optional[Tensor] = None):
         if self.batched:
-            memory = [(key_memory[:, i, 0], key_memory[:, i, 1]) for i in range(len(self.model.blocks))]
-            gap = gap_length.unsqueeze(1)
+            # (B, R, 2, K, D) → (B, 2R, K, D), sliced into (B, 1, K, D) keys and values per block, attended
+            # with Mul/ReduceSum (attend_rows): no per-head transposes of every row's memory, so a batch of
+            # rows costs little more than its dense layers
+            b, blocks = key_memory.shape[0], len(self.model.blocks)
+            rows = key_memory.reshape(b, 2 * blocks, key_memory.shape[3], key_memory.shape[4])
+            memory = [(rows[:, 2 * i:2 * i + 1], rows[:, 2 * i + 1:2 * i + 2]) for i in range(blocks)]
+            tokens = self.model.decode_queries(memory, query_frame_indices, gap_length.unsqueeze(1), query_features,
+                                               rows=True)
         else:
             memory = [(key_memory[i, 0:1], key_memory[i, 1:2]) for i in range(len(self.model.blocks))]
-            gap = gap_length
-        tokens = self.model.decode_queries(memory, query_frame_indices, gap, query_features)
+            tokens = self.model.decode_queries(memory, query_frame_indices, gap_length, query_features)
         root, rotation = self.model.heads(tokens)
         return (root, rotation) + _constants(self.model)
 

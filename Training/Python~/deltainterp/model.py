@@ -122,6 +122,23 @@ class MultiHeadAttention(nn.Module):
         width = self.heads * self.head_width
         return self.output(attended.transpose(1, 2).reshape(x.shape[0], -1, width))
 
+    def attend_rows(self, x: Tensor, memory_keys: Tensor, memory_values: Tensor) -> Tensor:
+        """`attend` for a few query tokens per row against each row's own memory (the frame graph), the
+        same maths written with Mul and ReduceSum over the memory's own layout: `memory_keys` and
+        `memory_values` are (B, 1, K, D), read as (B, 1, K, H, d) without a copy. `attend`'s MatMuls need
+        the memory transposed into per-head matrices, copies that grow with the batch (on ONNX Runtime,
+        with the slicing of the key memory, about a third of a 48-row frame run). Equal to `attend` to
+        float rounding."""
+        b, keys = x.shape[0], memory_keys.shape[2]
+        q = self.query(x).reshape(b, -1, 1, self.heads, self.head_width)                # (B, N, 1, H, d)
+        k = memory_keys.reshape(b, 1, keys, self.heads, self.head_width)                # (B, 1, K, H, d)
+        v = memory_values.reshape(b, 1, keys, self.heads, self.head_width)
+        scores = (k * q).sum(-1) * self.scale                                           # (B, N, K, H)
+        # softmax over K on the last axis (Barracuda's only one), then back
+        weights = torch.softmax(scores.transpose(2, 3), dim=-1).transpose(2, 3)
+        attended = (weights.unsqueeze(-1) * v).sum(2)                                   # (B, N, H, d)
+        return self.output(attended.reshape(b, -1, self.heads * self.head_width))
+
 
 class Block(nn.Module):
     def __init__(self, width: int, heads: int, dropout: float) -> None:
@@ -130,8 +147,10 @@ class Block(nn.Module):
         self.norm = LayerNorm(width)
         self.mlp = ResidualMlp(width, dropout)
 
-    def forward(self, x: Tensor, memory_keys: Tensor, memory_values: Tensor) -> Tensor:
-        x = torch.relu(self.norm(self.attention.attend(x, memory_keys, memory_values) + x))
+    def forward(self, x: Tensor, memory_keys: Tensor, memory_values: Tensor, rows: bool = False) -> Tensor:
+        """`rows`: attend with `MultiHeadAttention.attend_rows` (memory (B, 1, K, D); the frame graph)."""
+        attend = self.attention.attend_rows if rows else self.attention.attend
+        x = torch.relu(self.norm(attend(x, memory_keys, memory_values) + x))
         return self.mlp(x)
 
 
@@ -176,7 +195,9 @@ class DeltaInterpolator(nn.Module):
         return x, memory
 
     def decode_queries(self, memory: List[Tuple[Tensor, Tensor]], query_frame_indices: Tensor,
-                       gap_length: Tensor, query_features: Optional[Tensor] = None) -> Tensor:
+                       gap_length: Tensor, query_features: Optional[Tensor] = None, rows: bool = False) -> Tensor:
+        """Tokens of the query frames. `rows`: the memory is per row, (B, 1, K, D) keys and values, and
+        attention runs as `MultiHeadAttention.attend_rows` (the batched frame graph)."""
         m = (self.query_frame_projection(self.frame_embedding(query_frame_indices))
              + self.query_gap_projection(self.gap_embedding(gap_length)))
         if m.dim() == 2:  # frame indices shared by the batch (training, contract version 1 graphs)
@@ -187,7 +208,7 @@ class DeltaInterpolator(nn.Module):
                 raise ValueError("input delta mode 'none' needs query_features")
             m = m + self.query_input(query_features)
         for block, (k, v) in zip(self.blocks, memory):
-            m = block(m, k, v)
+            m = block(m, k, v, rows)
         return m
 
     def heads(self, tokens: Tensor) -> Tuple[Tensor, Tensor]:

@@ -13,7 +13,7 @@ from deltainterp import rotation6d
 from deltainterp.checkpoint import LoadedModel
 from deltainterp.decoding import decode_outputs
 from deltainterp.fixtures import Case, synthetic_request
-from deltainterp.model import DeltaInterpolator, preset
+from deltainterp.model import DeltaInterpolator, MultiHeadAttention, preset
 from deltainterp.transition import run_transition
 
 
@@ -63,6 +63,20 @@ def test_lazy_decoding_equals_whole(tiny):
         one_by_one = [model.heads(model.decode_queries(memory, query_idx[i:i + 1], gap)) for i in range(15)]
     assert torch.allclose(torch.cat([r for r, _ in one_by_one], 1), whole[0], atol=1e-6)
     assert torch.allclose(torch.cat([q for _, q in one_by_one], 1), whole[1], atol=1e-6)
+
+
+@pytest.mark.parametrize("width, heads", [(256, 8), (24, 3)])
+@pytest.mark.parametrize("keys, queries", [(11, 1), (5, 1), (1, 1), (11, 4)])
+def test_attend_rows_equals_attend(width, heads, keys, queries):
+    # the frame graph's attention (Mul/ReduceSum over each row's (B, 1, K, D) memory) is attend's maths
+    torch.manual_seed(keys * 10 + queries)
+    attention = MultiHeadAttention(width, heads).eval()
+    x, k, v = torch.randn(3, queries, width), torch.randn(3, keys, width), torch.randn(3, keys, width)
+    with torch.no_grad():
+        want = attention.attend(x, k, v)
+        got = attention.attend_rows(x, k.unsqueeze(1), v.unsqueeze(1))
+    assert got.shape == want.shape
+    assert torch.allclose(got, want, atol=1e-5, rtol=0)
 
 
 def _untrained(mode: str, skeleton) -> LoadedModel:
