@@ -26,10 +26,16 @@ namespace DeltaInterpolator.Sentis
     /// (<c>MainThreadDecoder</c>) schedules a run in one frame (<c>Worker.Schedule</c>, then
     /// <c>Tensor.ReadbackRequest</c> on each output) and collects it in a later frame once
     /// <c>IsReadbackRequestDone</c>, so the main thread never waits for the Burst jobs or the GPU;
-    /// <see cref="IInferenceBinding.Run"/> still runs and reads back at once. Not thread-safe:
+    /// <see cref="IInferenceBinding.Run"/> still runs and reads back at once. A scheduled run reads back
+    /// copies of its outputs (<c>Worker.CopyOutput</c>), since the worker's own outputs last only until its
+    /// next <c>Schedule</c>, and several bindings of one worker may be in flight. Not thread-safe:
     /// use a backend from the thread that created it (Unity's main thread for GPU backends).</para>
+    /// <para>As an <see cref="IDeviceTensorBackend"/> it keeps the keys graph's <c>key_memory</c> on the
+    /// worker's device: the keys run's output is copied there (<c>Worker.CopyOutput</c>) into a tensor Core
+    /// holds by a handle, and the frame graph's runs take that tensor as their input (<c>Worker.SetInput</c>),
+    /// with no readback or upload.</para>
     /// </remarks>
-    public sealed class SentisBackend : IInferenceBackend
+    public sealed class SentisBackend : IDeviceTensorBackend
     {
         private readonly Worker _worker;
         private readonly List<Binding> _bindings = new List<Binding>();
@@ -84,7 +90,23 @@ namespace DeltaInterpolator.Sentis
         public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
         {
             if (_disposed) throw new ObjectDisposedException(nameof(SentisBackend));
-            Binding binding = BindingTargets.Fill(new Binding(this), Description, inputs, outputs);
+            Binding binding = BindingTargets.Fill(new Binding(this, null), Description, inputs, outputs);
+            _bindings.Add(binding);
+            return binding;
+        }
+
+        /// <inheritdoc />
+        public IDeviceTensorBinding BindOnDevice(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs, string onDevice)
+        {
+            if (_disposed) throw new ObjectDisposedException(nameof(SentisBackend));
+            if (onDevice == null) throw new ArgumentNullException(nameof(onDevice));
+            Binding binding = BindingTargets.Fill(new Binding(this, onDevice), Description, inputs, outputs);
+            if (!binding.HasDeviceTensor)
+            {
+                binding.Dispose();
+                throw new ArgumentException($"'{onDevice}' is neither an input nor an output of the binding", nameof(onDevice));
+            }
+
             _bindings.Add(binding);
             return binding;
         }
@@ -145,22 +167,54 @@ namespace DeltaInterpolator.Sentis
             return new TensorShape(dims);
         }
 
-        private sealed class Binding : IAsyncInferenceBinding, IBindingTarget
+        /// <summary>A tensor on the worker's device, held by Core (<see cref="IDeviceTensor"/>).</summary>
+        private sealed class DeviceTensor : IDeviceTensor
+        {
+            public DeviceTensor(Tensor tensor)
+            {
+                Tensor = tensor;
+            }
+
+            public Tensor? Tensor { get; private set; }
+
+            public void Dispose()
+            {
+                Tensor?.Dispose();
+                Tensor = null;
+            }
+        }
+
+        private sealed class Binding : IAsyncInferenceBinding, IDeviceTensorBinding, IBindingTarget
         {
             private readonly SentisBackend _owner;
+            private readonly string? _onDevice;
             private readonly List<(InferenceTensor Core, Tensor<float>? Floats, Tensor<int>? Ints, int[]? Scratch, float[]? Staging)> _inputs = new List<(InferenceTensor, Tensor<float>?, Tensor<int>?, int[]?, float[]?)>();
-            private readonly List<Tensor> _pending = new List<Tensor>();
+            private readonly List<Tensor?> _copies = new List<Tensor?>();
             private bool _scheduled;
             private readonly List<InferenceTensor> _outputs = new List<InferenceTensor>();
             private bool _disposed;
+            private bool _deviceInput;
+            private bool _deviceOutput;
+            private DeviceTensor? _input;
+            private DeviceTensor? _output;
 
-            public Binding(SentisBackend owner)
+            public Binding(SentisBackend owner, string? onDevice)
             {
                 _owner = owner;
+                _onDevice = onDevice;
             }
+
+            public bool HasDeviceTensor => _deviceInput || _deviceOutput;
 
             public void BindInput(InferenceTensor t)
             {
+                if (t.Name == _onDevice)
+                {
+                    // Set before each run from a device tensor (SetInput); Core's array is not uploaded.
+                    _deviceInput = true;
+                    return;
+                }
+
                 TensorShape shape = Shape(t);
                 if (t.Kind == TensorElementKind.Float32)
                 {
@@ -173,7 +227,26 @@ namespace DeltaInterpolator.Sentis
                 }
             }
 
-            public void BindOutput(InferenceTensor t) => _outputs.Add(t);
+            public void BindOutput(InferenceTensor t)
+            {
+                if (t.Name == _onDevice) _deviceOutput = true;
+                else _outputs.Add(t);
+            }
+
+            public void SetInput(IDeviceTensor tensor)
+            {
+                if (!_deviceInput) throw new InvalidOperationException("this binding has no device input");
+                _input = tensor as DeviceTensor ?? throw new ArgumentException("expected a device tensor of a Sentis backend", nameof(tensor));
+            }
+
+            public IDeviceTensor TakeOutput()
+            {
+                if (!_deviceOutput) throw new InvalidOperationException("this binding has no device output");
+                if (_scheduled || _output == null) throw new InvalidOperationException("no completed run whose device output was not taken");
+                DeviceTensor output = _output;
+                _output = null;
+                return output;
+            }
 
             // Shown in the Profiler's CPU timeline on whichever thread decodes (main or worker): a blocking run,
             // and the scheduling of an asynchronous one (its readback completes in TryComplete).
@@ -197,13 +270,14 @@ namespace DeltaInterpolator.Sentis
             {
                 using var scope = s_Schedule.Auto();
                 Start();
-                _pending.Clear();
                 Worker worker = _owner._worker;
-                foreach (InferenceTensor t in _outputs)
+                for (int i = 0; i < _outputs.Count; i++)
                 {
-                    Tensor output = worker.PeekOutput(t.Name);
-                    output.ReadbackRequest();
-                    _pending.Add(output);
+                    // The binding's own copy (made once, reused): the worker's output is replaced by its next Schedule.
+                    if (_copies.Count <= i) _copies.Add(null);
+                    Tensor copy = CopyOutput(worker, _outputs[i].Name, _copies[i]);
+                    _copies[i] = copy;
+                    copy.ReadbackRequest();
                 }
 
                 _scheduled = true;
@@ -212,15 +286,24 @@ namespace DeltaInterpolator.Sentis
             public bool TryComplete()
             {
                 if (!_scheduled) throw new InvalidOperationException("TryComplete without Schedule");
-                foreach (Tensor output in _pending)
+                for (int i = 0; i < _outputs.Count; i++)
                 {
-                    if (!output.IsReadbackRequestDone()) return false;
+                    if (!_copies[i]!.IsReadbackRequestDone()) return false;
                 }
 
                 _scheduled = false;
-                for (int i = 0; i < _outputs.Count; i++) Read(_pending[i], _outputs[i]);
+                for (int i = 0; i < _outputs.Count; i++) Read(_copies[i]!, _outputs[i]);
                 return true;
             }
+
+#nullable disable
+            // Worker.CopyOutput allocates the copy when given null and reuses (reshapes) a given one.
+            private static Tensor CopyOutput(Worker worker, string name, Tensor reuse)
+            {
+                worker.CopyOutput(name, ref reuse);
+                return reuse;
+            }
+#nullable enable
 
             private void Start()
             {
@@ -250,7 +333,19 @@ namespace DeltaInterpolator.Sentis
                     }
                 }
 
+                if (_deviceInput)
+                {
+                    Tensor memory = _input?.Tensor ?? throw new InvalidOperationException($"{_owner.Description.Source}: no device tensor set for input '{_onDevice}' (SetInput), or it was released");
+                    worker.SetInput(_onDevice!, memory);
+                }
+
                 worker.Schedule();
+                if (_deviceOutput)
+                {
+                    // Copied on the device at once: it stays there for Core's handle, past the worker's next run.
+                    _output?.Dispose();
+                    _output = new DeviceTensor(CopyOutput(worker, _onDevice!, null));
+                }
             }
 
             private void Read(Tensor output, InferenceTensor target)
@@ -313,6 +408,11 @@ namespace DeltaInterpolator.Sentis
                 }
 
                 _inputs.Clear();
+                foreach (Tensor? copy in _copies) copy?.Dispose();
+                _copies.Clear();
+                _output?.Dispose();
+                _output = null;
+                _input = null;
                 _owner._bindings.Remove(this);
             }
         }

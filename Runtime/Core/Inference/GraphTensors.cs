@@ -186,6 +186,23 @@ namespace DeltaInterpolator.Core.Inference
         }
 
         /// <summary>
+        /// Tensors for the frame graph of <paramref name="batch"/> rows whose <c>key_memory</c> stays on an engine's
+        /// device (<see cref="IDeviceTensorBackend.BindOnDevice"/>): <see cref="KeyMemory"/> names and shapes that
+        /// input only (a view of <paramref name="keys"/>' array, never read or written); gap lengths, query frames
+        /// and outputs are this set's own. Gap lengths are placeholders until each row's is written (<see cref="SetKeyRow"/>).
+        /// </summary>
+        public static GraphTensors ForDeviceFrame(ModelContract contract, GraphTensors keys, int batch, int queryFrames)
+        {
+            if (contract == null) throw new ArgumentNullException(nameof(contract));
+            if (keys == null || keys.Graph != ModelGraphKind.Keys) throw new ArgumentException("expected the keys graph's tensors", nameof(keys));
+            if (batch < 1 || batch > keys.Batch) throw new ArgumentOutOfRangeException(nameof(batch), batch, $"expected 1..{keys.Batch} rows");
+            if (queryFrames < 1) throw new ArgumentOutOfRangeException(nameof(queryFrames), queryFrames, "expected at least one query frame");
+            InferenceTensor memory = batch == keys.Batch ? keys.KeyMemory! : keys.KeyMemory!.Prefix(batch);
+            return new GraphTensors(ModelGraphKind.Frame, keys.PastFrames, queryFrames, queryFrames, null, null, Query(contract, batch, queryFrames),
+                InferenceTensor.Int64(TensorNames.GapLength, batch), memory, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), false, batch);
+        }
+
+        /// <summary>
         /// The same tensors for the first <paramref name="rows"/> rows only (views over the same arrays, no
         /// copy): a batch of fewer transitions than the capacity. Version 2 graphs only.
         /// </summary>
@@ -228,6 +245,16 @@ namespace DeltaInterpolator.Core.Inference
         {
             if (backend == null) throw new ArgumentNullException(nameof(backend));
             return backend.Bind(_inputs, _outputs);
+        }
+
+        /// <summary>
+        /// Binds these tensors to <paramref name="backend"/> once with the tensor named <paramref name="onDevice"/>
+        /// kept on its device (<see cref="IDeviceTensorBackend.BindOnDevice"/>).
+        /// </summary>
+        public IDeviceTensorBinding BindOnDevice(IDeviceTensorBackend backend, string onDevice)
+        {
+            if (backend == null) throw new ArgumentNullException(nameof(backend));
+            return backend.BindOnDevice(_inputs, _outputs, onDevice);
         }
 
         /// <summary>

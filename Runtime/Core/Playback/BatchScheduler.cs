@@ -22,6 +22,13 @@ namespace DeltaInterpolator.Core.Playback
     /// one pump and collected in a later one, so the calling thread never waits for the engine.</para>
     /// <para>Contract version 1 graphs have no batch axis: they run one request per run (batch 1), as do
     /// models without the lazy graphs (one whole-transition run per request).</para>
+    /// <para>When the keys and frame backends can keep a tensor on their device (<see cref="IDeviceTensorBackend"/>:
+    /// Sentis on a GPU), <c>key_memory</c> never crosses to the host: each keys run's output stays on the device
+    /// (one handle per keys run, a <see cref="DeviceRun"/>, released when none of its rows plays any more), and frames
+    /// are batched per keys run instead of across runs: every frame run binds one keys run's device tensor and
+    /// decodes all of its rows (a finished or superseded row's frames are computed and ignored), so no gather
+    /// on the device is needed. Otherwise every row's key encoding is read back into <see cref="TransitionJob.KeyMemory"/>
+    /// and gathered into one frame batch per number of past keys.</para>
     /// </remarks>
     internal sealed class BatchScheduler : IDisposable
     {
@@ -32,7 +39,8 @@ namespace DeltaInterpolator.Core.Playback
         private readonly List<TransitionJob> _active = new List<TransitionJob>(256);
         private readonly Dictionary<int, Group> _groups = new Dictionary<int, Group>();
         private readonly List<Group> _groupList = new List<Group>();
-        private readonly List<TransitionJob> _scratch = new List<TransitionJob>(256);
+        private readonly List<DeviceRun> _runScratch = new List<DeviceRun>(64);
+        private readonly bool _device;
 
         /// <param name="inbetweener">The model (its keys and frame graphs when loaded).</param>
         /// <param name="maxBatch">Most rows per run (1: one request per run, the unbatched reference).</param>
@@ -48,6 +56,7 @@ namespace DeltaInterpolator.Core.Playback
             _contract = inbetweener.Contract;
             _lazy = lazy && inbetweener.SupportsLazyDecoding;
             _async = useAsync;
+            _device = _lazy && inbetweener.KeysBackend is IDeviceTensorBackend && inbetweener.FrameBackend is IDeviceTensorBackend;
             if (maxBatch < 1) throw new ArgumentOutOfRangeException(nameof(maxBatch), maxBatch, "expected at least 1 row per run");
             MaxBatch = _contract.HasBatchAxis ? maxBatch : 1;
         }
@@ -60,6 +69,23 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>True when frames are published one by one (lazy graphs).</summary>
         public bool Lazy => _lazy;
+
+        /// <summary>
+        /// True when <c>key_memory</c> stays on the engine's device (both lazy graphs' backends are
+        /// <see cref="IDeviceTensorBackend"/>s): frames are batched per keys run.
+        /// </summary>
+        public bool KeepsKeyMemoryOnDevice => _device;
+
+        /// <summary>Keys runs whose device <c>key_memory</c> is held now (some of their rows still play).</summary>
+        public int DeviceRunsHeld
+        {
+            get
+            {
+                int n = 0;
+                for (int g = 0; g < _groupList.Count; g++) n += _groupList[g].Runs.Count;
+                return n;
+            }
+        }
 
         /// <summary>Jobs started and not yet finished.</summary>
         public int ActiveCount => _active.Count;
@@ -113,6 +139,7 @@ namespace DeltaInterpolator.Core.Playback
             int spent = 0;
             Retire();
             for (int g = 0; g < _groupList.Count; g++) Collect(_groupList[g]);
+            if (_device) ReleaseRuns();
             if (!_lazy)
             {
                 spent = RunWhole(tokenBudget);
@@ -143,6 +170,14 @@ namespace DeltaInterpolator.Core.Playback
                 }
 
                 group.Scratch.Clear();
+            }
+
+            if (_device)
+            {
+                spent = RunDeviceFrames(tokenBudget, framesPerJob, spent);
+                Retire();
+                ReleaseRuns();
+                return spent;
             }
 
             for (int round = 0; round < framesPerJob; round++)
@@ -310,12 +345,18 @@ namespace DeltaInterpolator.Core.Playback
                 return rows * k;
             }
 
-            ScatterKeys(group, rows);
+            ScatterKeys(group, rows, binding);
             return rows * k;
         }
 
-        private void ScatterKeys(Group group, int rows)
+        private void ScatterKeys(Group group, int rows, IInferenceBinding binding)
         {
+            if (_device)
+            {
+                KeepKeysOnDevice(group, rows, (IDeviceTensorBinding)binding);
+                return;
+            }
+
             float[] memory = group.Keys!.KeyMemory!.Floats!;
             int size = group.MemorySize;
             for (int r = 0; r < rows; r++)
@@ -419,14 +460,19 @@ namespace DeltaInterpolator.Core.Playback
                 group.FrameJobs[r] = null;
                 job.InFlight = false;
                 if (job.Cancelled) continue;
-                int from = group.FrameIndex[r];
-                Transition t = job.Transition;
-                int per = FramesPerRun;
-                for (int q = 0; q < per && from + q < t.MissingFrames; q++)
-                {
-                    _inbetweener.Decode(t, job.Localization, job.LocalRoot, job.Pairs, root, rotation, r * per + q, from + q);
-                    job.Publish(from + q + 1);
-                }
+                DecodeRow(job, root, rotation, r, group.FrameIndex[r]);
+            }
+        }
+
+        /// <summary>Decodes and publishes row <paramref name="r"/>'s frames from <paramref name="from"/> on (those within its gap).</summary>
+        private void DecodeRow(TransitionJob job, float[] root, float[] rotation, int r, int from)
+        {
+            Transition t = job.Transition;
+            int per = FramesPerRun;
+            for (int q = 0; q < per && from + q < t.MissingFrames; q++)
+            {
+                _inbetweener.Decode(t, job.Localization, job.LocalRoot, job.Pairs, root, rotation, r * per + q, from + q);
+                job.Publish(from + q + 1);
             }
         }
 
@@ -448,8 +494,9 @@ namespace DeltaInterpolator.Core.Playback
 
                 if (done)
                 {
+                    IAsyncInferenceBinding binding = group.KeysPending!;
                     group.KeysPending = null;
-                    ScatterKeys(group, group.KeysPendingRows);
+                    ScatterKeys(group, group.KeysPendingRows, binding);
                 }
             }
 
@@ -473,6 +520,203 @@ namespace DeltaInterpolator.Core.Playback
                     ScatterFrames(group, group.FramePendingRows);
                 }
             }
+
+            for (int i = 0; i < group.Runs.Count; i++)
+            {
+                DeviceRun run = group.Runs[i];
+                if (run.Pending == null) continue;
+                bool done;
+                try
+                {
+                    done = run.Pending.TryComplete();
+                }
+                catch (Exception e)
+                {
+                    run.Pending = null;
+                    FailRun(run, e);
+                    continue;
+                }
+
+                if (done)
+                {
+                    run.Pending = null;
+                    ScatterRun(run);
+                }
+            }
+        }
+
+        /// <summary>A finished keys run on a device backend: its <c>key_memory</c> stays there, held by a <see cref="DeviceRun"/> of its rows.</summary>
+        private void KeepKeysOnDevice(Group group, int rows, IDeviceTensorBinding binding)
+        {
+            IDeviceTensor memory;
+            try
+            {
+                memory = binding.TakeOutput();
+            }
+            catch (Exception e)
+            {
+                Fail(group.KeysJobs, rows, e);
+                return;
+            }
+
+            DeviceRun run = group.Rent(rows);
+            run.Memory = memory;
+            for (int r = 0; r < rows; r++)
+            {
+                TransitionJob job = group.KeysJobs[r]!;
+                group.KeysJobs[r] = null;
+                job.InFlight = false;
+                run.Hold(r, job);
+                job.Encoded = true;
+            }
+        }
+
+        /// <summary>
+        /// Frame runs of the keys runs held on the device, one per keys run with rows still playing (those whose
+        /// frames are due first, then those ahead of playback, each in request order), within the budget (a run
+        /// costs all of its rows).
+        /// </summary>
+        private int RunDeviceFrames(int tokenBudget, int framesPerJob, int spent)
+        {
+            for (int round = 0; round < framesPerJob; round++)
+            {
+                int before = spent;
+                _runScratch.Clear();
+                for (int urgency = 1; urgency <= 2; urgency++)
+                {
+                    for (int g = 0; g < _groupList.Count; g++)
+                    {
+                        List<DeviceRun> runs = _groupList[g].Runs;
+                        for (int i = 0; i < runs.Count; i++)
+                        {
+                            if (runs[i].Pending == null && runs[i].Urgency() == urgency) _runScratch.Add(runs[i]);
+                        }
+                    }
+                }
+
+                for (int i = 0; i < _runScratch.Count; i++)
+                {
+                    DeviceRun run = _runScratch[i];
+                    int cost = run.Rows * FramesPerRun;
+                    if (spent > 0 && spent + cost > tokenBudget) continue;
+                    spent += RunDeviceFrame(run);
+                }
+
+                _runScratch.Clear();
+                if (spent == before) break;
+            }
+
+            return spent;
+        }
+
+        private int RunDeviceFrame(DeviceRun run)
+        {
+            int per = FramesPerRun;
+            int rows = run.Rows;
+            GraphTensors tensors = run.Frame;
+            long[] query = tensors.QueryFrameIndices!.Longs!;
+            long[] gap = tensors.GapLength.Longs!;
+            int past = tensors.PastFrames;
+            for (int r = 0; r < rows; r++)
+            {
+                int n = (int)gap[r];
+                // A row that no longer plays asks for its last frame again (computed, not used).
+                int from = run.Live(r) ? run.Jobs[r]!.Decoded : -1;
+                run.FrameIndex[r] = from;
+                int first = from < 0 ? n - 1 : from;
+                for (int q = 0; q < per; q++) query[r * per + q] = past + Math.Min(first + q, n - 1);
+            }
+
+            IDeviceTensorBinding binding;
+            try
+            {
+                binding = run.Binding(rows, (IDeviceTensorBackend)_inbetweener.FrameBackend!);
+                binding.SetInput(run.Memory!);
+            }
+            catch (Exception e)
+            {
+                FailRun(run, e);
+                return 0;
+            }
+
+            Runs++;
+            Rows += rows;
+            Tokens += rows * per;
+            if (_async && binding is IAsyncInferenceBinding scheduled)
+            {
+                for (int r = 0; r < rows; r++)
+                {
+                    if (run.FrameIndex[r] >= 0) run.Jobs[r]!.InFlight = true;
+                }
+
+                try
+                {
+                    scheduled.Schedule();
+                }
+                catch (Exception e)
+                {
+                    FailRun(run, e);
+                    return rows * per;
+                }
+
+                run.Pending = scheduled;
+                return rows * per;
+            }
+
+            try
+            {
+                binding.Run();
+            }
+            catch (Exception e)
+            {
+                FailRun(run, e);
+                return rows * per;
+            }
+
+            ScatterRun(run);
+            return rows * per;
+        }
+
+        private void ScatterRun(DeviceRun run)
+        {
+            float[] root = run.Frame.RootPositionDelta!.Floats!;
+            float[] rotation = run.Frame.Rotation6DDelta!.Floats!;
+            for (int r = 0; r < run.Rows; r++)
+            {
+                int from = run.FrameIndex[r];
+                if (from < 0) continue;
+                run.FrameIndex[r] = -1;
+                TransitionJob job = run.Jobs[r]!;
+                job.InFlight = false;
+                if (job.Cancelled) continue;
+                DecodeRow(job, root, rotation, r, from);
+            }
+        }
+
+        private static void FailRun(DeviceRun run, Exception e)
+        {
+            for (int r = 0; r < run.Rows; r++)
+            {
+                if (run.FrameIndex[r] < 0) continue;
+                run.FrameIndex[r] = -1;
+                TransitionJob job = run.Jobs[r]!;
+                job.InFlight = false;
+                job.Error = e;
+            }
+        }
+
+        /// <summary>Releases the device <c>key_memory</c> of every keys run none of whose rows plays any more.</summary>
+        private void ReleaseRuns()
+        {
+            for (int g = 0; g < _groupList.Count; g++)
+            {
+                Group group = _groupList[g];
+                for (int i = group.Runs.Count - 1; i >= 0; i--)
+                {
+                    DeviceRun run = group.Runs[i];
+                    if (run.Pending == null && run.Urgency() == 0) group.Release(i);
+                }
+            }
         }
 
         private static void Fail(TransitionJob?[] jobs, int rows, Exception e)
@@ -491,7 +735,7 @@ namespace DeltaInterpolator.Core.Playback
         {
             if (!_groups.TryGetValue(past, out Group? group))
             {
-                group = new Group(_contract, past, MaxBatch, FramesPerRun);
+                group = new Group(_contract, past, MaxBatch, FramesPerRun, _device);
                 _groups.Add(past, group);
                 _groupList.Add(group);
             }
@@ -508,10 +752,13 @@ namespace DeltaInterpolator.Core.Playback
             private IInferenceBinding?[] _frameBindings = Array.Empty<IInferenceBinding?>();
 
             private readonly int _framesPerRun;
+            private readonly bool _device;
+            private readonly List<DeviceRun> _free = new List<DeviceRun>();
 
-            public Group(ModelContract contract, int past, int maxBatch, int framesPerRun)
+            public Group(ModelContract contract, int past, int maxBatch, int framesPerRun, bool device)
             {
                 _contract = contract;
+                _device = device;
                 _framesPerRun = framesPerRun;
                 _maxBatch = maxBatch;
                 Past = past;
@@ -527,6 +774,9 @@ namespace DeltaInterpolator.Core.Playback
             public int Capacity { get; private set; }
 
             public List<TransitionJob> Scratch { get; }
+
+            /// <summary>Keys runs held on the device (device backends only), oldest first.</summary>
+            public List<DeviceRun> Runs { get; } = new List<DeviceRun>();
 
             public GraphTensors? Keys { get; private set; }
 
@@ -562,6 +812,11 @@ namespace DeltaInterpolator.Core.Playback
                 DisposeBindings();
                 // Placeholder gap 1 at creation: every row's gap and key frames are written when it is gathered.
                 Keys = GraphTensors.Create(_contract, ModelGraphKind.Keys, Past, 1, 0, batch: capacity);
+                KeysJobs = new TransitionJob?[capacity];
+                _keysBindings = new IInferenceBinding?[capacity + 1];
+                Capacity = capacity;
+                // On a device backend frames run per keys run, each with tensors of its own (DeviceRun).
+                if (_device) return rows;
                 GraphTensors frameKeys = GraphTensors.Create(_contract, ModelGraphKind.Keys, Past, 1, 0, batch: capacity);
                 Frame = GraphTensors.ForFrame(_contract, frameKeys, 1);
                 if (_framesPerRun > 1)
@@ -570,24 +825,64 @@ namespace DeltaInterpolator.Core.Playback
                     frameKeys = GraphTensors.Create(_contract, ModelGraphKind.Keys, Past, _framesPerRun, 0, batch: capacity);
                     Frame = GraphTensors.ForFrame(_contract, frameKeys, _framesPerRun);
                 }
-                _keysBindings = new IInferenceBinding?[capacity + 1];
                 _frameBindings = new IInferenceBinding?[capacity + 1];
-                KeysJobs = new TransitionJob?[capacity];
                 FrameJobs = new TransitionJob?[capacity];
                 FrameIndex = new int[capacity];
                 RowOwner = new TransitionJob?[capacity];
                 RowGeneration = new int[capacity];
-                Capacity = capacity;
                 return rows;
             }
 
             public IInferenceBinding KeysBinding(int rows, IInferenceBackend backend) =>
-                _keysBindings[rows] ??= Keys!.Prefix(rows).Bind(backend);
+                _keysBindings[rows] ??= _device ? Keys!.Prefix(rows).BindOnDevice((IDeviceTensorBackend)backend, TensorNames.KeyMemory) : Keys!.Prefix(rows).Bind(backend);
+
+            /// <summary>A free <see cref="DeviceRun"/> for a keys run of <paramref name="rows"/> rows (the smallest that fits, or a new one), added to <see cref="Runs"/>.</summary>
+            public DeviceRun Rent(int rows)
+            {
+                int best = -1;
+                for (int i = 0; i < _free.Count; i++)
+                {
+                    if (_free[i].Capacity >= rows && (best < 0 || _free[i].Capacity < _free[best].Capacity)) best = i;
+                }
+
+                DeviceRun run;
+                if (best >= 0)
+                {
+                    run = _free[best];
+                    _free.RemoveAt(best);
+                }
+                else
+                {
+                    int capacity = 1;
+                    while (capacity < rows) capacity *= 2;
+                    run = new DeviceRun(_contract, Keys!, Math.Min(capacity, Capacity), _framesPerRun);
+                }
+
+                run.Rows = rows;
+                Runs.Add(run);
+                return run;
+            }
+
+            /// <summary>Releases <see cref="Runs"/>[<paramref name="index"/>]'s device tensor and keeps the run for reuse.</summary>
+            public void Release(int index)
+            {
+                DeviceRun run = Runs[index];
+                Runs.RemoveAt(index);
+                run.Release();
+                _free.Add(run);
+            }
 
             public IInferenceBinding FrameBinding(int rows, IInferenceBackend backend) =>
                 _frameBindings[rows] ??= Frame!.Prefix(rows).Bind(backend);
 
-            public void Dispose() => DisposeBindings();
+            public void Dispose()
+            {
+                DisposeBindings();
+                foreach (DeviceRun run in Runs) run.Dispose();
+                foreach (DeviceRun run in _free) run.Dispose();
+                Runs.Clear();
+                _free.Clear();
+            }
 
             private void DisposeBindings()
             {
@@ -595,6 +890,103 @@ namespace DeltaInterpolator.Core.Playback
                 foreach (IInferenceBinding? b in _frameBindings) b?.Dispose();
                 _keysBindings = Array.Empty<IInferenceBinding?>();
                 _frameBindings = Array.Empty<IInferenceBinding?>();
+            }
+        }
+
+        /// <summary>
+        /// One keys run whose <c>key_memory</c> stays on the device: the handle, the requests of its rows (each with
+        /// the generation it was encoded for), and frame tensors and bindings of its own, so that runs of different
+        /// keys runs can be in flight together. Reused (with its tensors and bindings) after <see cref="Release"/>.
+        /// </summary>
+        private sealed class DeviceRun : IDisposable
+        {
+            private readonly IDeviceTensorBinding?[] _bindings;
+            private readonly int[] _generation;
+
+            public DeviceRun(ModelContract contract, GraphTensors keys, int capacity, int framesPerRun)
+            {
+                Capacity = capacity;
+                Frame = GraphTensors.ForDeviceFrame(contract, keys, capacity, framesPerRun);
+                Jobs = new TransitionJob?[capacity];
+                FrameIndex = new int[capacity];
+                _generation = new int[capacity];
+                _bindings = new IDeviceTensorBinding?[capacity + 1];
+                for (int r = 0; r < capacity; r++) FrameIndex[r] = -1;
+            }
+
+            public int Capacity { get; }
+
+            /// <summary>Rows of the keys run (all of them decode in each frame run).</summary>
+            public int Rows { get; set; }
+
+            /// <summary>The keys run's <c>key_memory</c> on the device, [Rows, R, 2, K, D].</summary>
+            public IDeviceTensor? Memory { get; set; }
+
+            /// <summary>Frame graph tensors (gap lengths per row written at <see cref="Hold"/>).</summary>
+            public GraphTensors Frame { get; }
+
+            public TransitionJob?[] Jobs { get; }
+
+            /// <summary>First missing frame each row of the run in flight decodes; −1 for a row whose frames are ignored.</summary>
+            public int[] FrameIndex { get; }
+
+            public IAsyncInferenceBinding? Pending { get; set; }
+
+            public void Hold(int row, TransitionJob job)
+            {
+                Jobs[row] = job;
+                _generation[row] = job.Generation;
+                FrameIndex[row] = -1;
+                Frame.SetKeyRow(row, job.Transition.MissingFrames);
+            }
+
+            /// <summary>True while row <paramref name="r"/>'s request still wants frames from this run.</summary>
+            public bool Live(int r)
+            {
+                TransitionJob? job = Jobs[r];
+                // Finished first: a job is reused (new generation) only after the scheduler finished it, and
+                // that read orders the generation read after it.
+                if (job == null || job.Finished || job.Generation != _generation[r]) return false;
+                return !job.Cancelled && job.Error == null && job.Decoded < job.Transition.MissingFrames;
+            }
+
+            /// <summary>0: no row plays any more; 1: some row's next frame is due; 2: rows play, ahead of playback.</summary>
+            public int Urgency()
+            {
+                int urgency = 0;
+                for (int r = 0; r < Rows; r++)
+                {
+                    if (!Live(r)) continue;
+                    TransitionJob job = Jobs[r]!;
+                    if (job.Decoded <= job.Needed) return 1;
+                    urgency = 2;
+                }
+
+                return urgency;
+            }
+
+            public IDeviceTensorBinding Binding(int rows, IDeviceTensorBackend backend) =>
+                _bindings[rows] ??= Frame.Prefix(rows).BindOnDevice(backend, TensorNames.KeyMemory);
+
+            public void Release()
+            {
+                Memory?.Dispose();
+                Memory = null;
+                Pending = null;
+                for (int r = 0; r < Rows; r++)
+                {
+                    Jobs[r] = null;
+                    FrameIndex[r] = -1;
+                }
+
+                Rows = 0;
+            }
+
+            public void Dispose()
+            {
+                Release();
+                foreach (IDeviceTensorBinding? b in _bindings) b?.Dispose();
+                Array.Clear(_bindings, 0, _bindings.Length);
             }
         }
     }

@@ -54,12 +54,15 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
         }
 
-        [TestCase(0)]
-        [TestCase(2)]
-        [TestCase(5)]
-        public void LateFramesShowSlerpAndTheCorrectionEasesInWithoutHoldOrPop(int latencyFrames)
+        [TestCase(0, false)]
+        [TestCase(2, false)]
+        [TestCase(5, false)]
+        [TestCase(0, true)]
+        [TestCase(2, true)]
+        [TestCase(5, true)]
+        public void LateFramesShowSlerpAndTheCorrectionEasesInWithoutHoldOrPop(int latencyFrames, bool device)
         {
-            using var crowd = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out _)), 8, seed: 2);
+            using var crowd = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out _, device)), 8, seed: 2);
             crowd.PlayUntil(0.5);
             crowd.RequestAll();
             var records = new List<(double U, double[] Shown, double Correction)>[crowd.Players.Count];
@@ -126,10 +129,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             if (latencyFrames == 2) Assert.That(sawEase, Is.True, "and the correction eased in");
         }
 
-        [Test]
-        public void ABurstOfRequestsIsSpreadOverFramesWithinTheBudget()
+        [TestCase(false)]
+        [TestCase(true)]
+        public void ABurstOfRequestsIsSpreadOverFramesWithinTheBudget(bool device)
         {
-            Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs);
+            Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs, device);
             var decoder = new MainThreadDecoder(model) { TokensPerFrame = 200 };
             using var crowd = new Crowd(decoder, 64, seed: 3);
             crowd.PlayUntil(0.5);
@@ -188,6 +192,110 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 frames of 16 playing characters");
         }
 
+        [TestCase(0)]
+        [TestCase(3)]
+        public void OnADeviceBackendKeyMemoryNeverCrossesToTheHostAndResultsEqualTheHostPath(int latencyFrames)
+        {
+            using var host = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out StandInBackend[] h)), 12, seed: 6);
+            using var device = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out StandInBackend[] d, device: true)), 12, seed: 6);
+            BatchScheduler scheduler = ((MainThreadDecoder)device.Decoder).Scheduler;
+            Assert.That(scheduler.KeepsKeyMemoryOnDevice, Is.True);
+            Assert.That(((MainThreadDecoder)host.Decoder).Scheduler.KeepsKeyMemoryOnDevice, Is.False);
+            long reads = h[1].KeyMemoryHostReads + d[1].KeyMemoryHostReads, uploads = h[2].KeyMemoryHostUploads + d[2].KeyMemoryHostUploads;
+            Assert.That(reads, Is.EqualTo(2), "each model's load-time probe (constant outputs) ran the keys graph once on the host");
+            Assert.That(uploads, Is.EqualTo(2), "and the frame graph");
+            foreach (Crowd c in new[] { host, device })
+            {
+                c.PlayUntil(0.5);
+                c.RequestAll();
+                c.PlayUntil(0.6);
+                // Superseded rows of the first keys runs: their frames are computed with the others' and ignored.
+                c.RequestAll(i => i % 2 == 0);
+                c.PlayUntil(0.8);
+                c.RequestAll(i => i % 3 == 0);
+                c.PlayUntil(0.85);
+                if (c == device) Assert.That(scheduler.DeviceRunsHeld, Is.GreaterThan(1), "several keys runs held on the device at once");
+                c.PlayUntil(2.5);
+            }
+
+            for (int i = 0; i < host.Players.Count; i++)
+            {
+                TransitionJob x = host.Players[i].CurrentJob!, y = device.Players[i].CurrentJob!;
+                Assert.That(y.Decoded, Is.EqualTo(y.Transition.MissingFrames), $"character {i}: every frame decoded");
+                Assert.That(MaxAbs(x.Transition.LocalRotations, y.Transition.LocalRotations), Is.LessThan(1e-5), $"character {i}: device vs host key memory");
+                Assert.That(MaxAbsValues(x.Transition.RootPositions, y.Transition.RootPositions), Is.LessThan(1e-5 / 0.01), $"character {i}: root positions");
+                Assert.That(device.Players[i].HeldFrames, Is.EqualTo(0), "never a frozen frame");
+            }
+
+            // Frames of a keys run start as soon as it is encoded (not after the last frame run of its group): never later than on the host path.
+            int lateHost = 0, lateDevice = 0;
+            for (int i = 0; i < host.Players.Count; i++)
+            {
+                lateHost += host.Players[i].LateModelFrames;
+                lateDevice += device.Players[i].LateModelFrames;
+            }
+
+            Assert.That(lateDevice, Is.LessThanOrEqualTo(lateHost), "late model frames, device vs host path");
+            TestContext.Out.WriteLine($"late model frames: host {lateHost}, device {lateDevice}");
+
+            Assert.That(h[1].KeyMemoryHostReads, Is.GreaterThan(1), "the host path reads key_memory back (the counter counts)");
+            Assert.That(h[2].KeyMemoryHostUploads, Is.GreaterThan(1), "and uploads it for frame runs");
+            Assert.That(d[1].Runs, Is.GreaterThan(1));
+            Assert.That(d[2].Runs, Is.GreaterThan(1));
+            Assert.That(d[1].KeyMemoryHostReads, Is.EqualTo(1), "no key_memory read back to the host after the probe");
+            Assert.That(d[2].KeyMemoryHostUploads, Is.EqualTo(1), "no key_memory uploaded from the host after the probe");
+            var keys = (DeviceStandInBackend)d[1];
+            Assert.That(keys.MostDeviceTensorsHeld, Is.GreaterThan(1));
+            Assert.That(scheduler.DeviceRunsHeld, Is.EqualTo(0), "every keys run released once its rows stopped playing");
+            Assert.That(keys.DeviceTensorsHeld, Is.EqualTo(0), "and its device tensor with it");
+        }
+
+        [Test]
+        public void OnADeviceBackendAWorkerThreadDecodesTheSameFrames()
+        {
+            // InferenceWorker runs bindings synchronously (Run, then TakeOutput) on its own thread.
+            using var host = new Crowd(new InferenceWorker(StandInInbetweener(0, out _)), 8, seed: 7);
+            using var device = new Crowd(new InferenceWorker(StandInInbetweener(0, out StandInBackend[] d, device: true)), 8, seed: 7);
+            foreach (Crowd c in new[] { host, device })
+            {
+                c.PlayUntil(0.5);
+                c.RequestAll();
+                foreach (TransitionPlayer p in c.Players) Assert.That(p.WaitUntilDecoded(10000), Is.True);
+            }
+
+            for (int i = 0; i < host.Players.Count; i++)
+            {
+                TransitionJob x = host.Players[i].CurrentJob!, y = device.Players[i].CurrentJob!;
+                Assert.That(MaxAbs(x.Transition.LocalRotations, y.Transition.LocalRotations), Is.LessThan(1e-5), $"character {i}");
+            }
+
+            Assert.That(d[1].KeyMemoryHostReads + d[2].KeyMemoryHostUploads, Is.EqualTo(2), "the load-time probe's only");
+            device.PlayUntil(2.0);
+            Assert.That(((DeviceStandInBackend)d[1]).DeviceTensorsHeld, Is.EqualTo(0), "released once played");
+        }
+
+        [Test]
+        public void OnADeviceBackendAPlayingCrowdAllocatesNothingPerFrame()
+        {
+            using var crowd = new Crowd(new MainThreadDecoder(StandInInbetweener(2, out StandInBackend[] d, device: true)), 16, seed: 5);
+            crowd.PlayUntil(0.5);
+            crowd.RequestAll();
+            crowd.PlayUntil(2.0);
+            // The second round reuses the first's keys runs (tensors, bindings, device buffers); its keys run
+            // (latency 2) completes within the frames measured. The first frame after a request is not measured,
+            // as with ONNX Runtime above (the players' own first frame of a transition).
+            crowd.RequestAll();
+            crowd.Step();
+            BatchScheduler scheduler = ((MainThreadDecoder)crowd.Decoder).Scheduler;
+            Assert.That(scheduler.DeviceRunsHeld, Is.EqualTo(0), "the keys run is still in flight");
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 40; i++) crowd.Step();
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 frames of 16 playing characters");
+            Assert.That(d[1].Runs, Is.GreaterThan(2));
+            Assert.That(scheduler.KeepsKeyMemoryOnDevice, Is.True);
+        }
+
         private static string V1Model => System.IO.Path.Combine(Fixtures.Directory, "tiny-model-v1.onnx");
 
         private static double[] At(TransitionJob job, double u, bool model)
@@ -226,6 +334,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             return max;
         }
 
+        private static double MaxAbsValues(double[] a, double[] b)
+        {
+            double max = 0;
+            for (int i = 0; i < a.Length; i++) max = Math.Max(max, Math.Abs(a[i] - b[i]));
+            return max;
+        }
+
         private static double MaxAbs(double[] a, double[] b)
         {
             double max = 0;
@@ -246,7 +361,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>The tiny model's contract on <see cref="StandInBackend"/>s: [whole, keys, frame].</summary>
-        internal static Inbetweener StandInInbetweener(int latencyFrames, out StandInBackend[] graphs)
+        internal static Inbetweener StandInInbetweener(int latencyFrames, out StandInBackend[] graphs, bool device = false)
         {
             var descriptions = new ModelDescription[3];
             string[] files = { Fixtures.TinyModel, Fixtures.TinyModel.Replace(".onnx", ".keys.onnx"), Fixtures.TinyModel.Replace(".onnx", ".frame.onnx") };
@@ -256,7 +371,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 descriptions[i] = real.Description;
             }
 
-            graphs = new[] { new StandInBackend(descriptions[0], latencyFrames), new StandInBackend(descriptions[1], latencyFrames), new StandInBackend(descriptions[2], latencyFrames) };
+            graphs = device
+                ? new StandInBackend[] { new DeviceStandInBackend(descriptions[0], latencyFrames), new DeviceStandInBackend(descriptions[1], latencyFrames), new DeviceStandInBackend(descriptions[2], latencyFrames) }
+                : new[] { new StandInBackend(descriptions[0], latencyFrames), new StandInBackend(descriptions[1], latencyFrames), new StandInBackend(descriptions[2], latencyFrames) };
             return new Inbetweener(graphs[0], graphs[1], graphs[2]);
         }
 
@@ -315,8 +432,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 while (Time + 1 / Fps <= time + 1e-9) Step();
             }
 
-            /// <summary>Every character asks for a transition in the same frame (durations 0.4–0.8 s, varied per character).</summary>
-            public void RequestAll()
+            /// <summary>Every character (or those <paramref name="which"/> picks) asks for a transition in the same frame (durations 0.4–0.8 s, varied per character).</summary>
+            public void RequestAll(Predicate<int>? which = null)
             {
                 _round++;
                 RequestTime = Time;
@@ -324,6 +441,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 var rotations = new double[4 * Map.BoneCount];
                 for (int i = 0; i < Players.Count; i++)
                 {
+                    if (which != null && !which(i)) continue;
                     _clips[i].Sample(Time + 3 + i * 0.1 + _round, root, rotations);
                     Players[i].RequestTransition(root, rotations, 0.4 + 0.1 * ((i + _seed) % 5));
                 }
@@ -336,9 +454,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// <summary>
     /// A stand-in inference engine with a known cost and latency: it answers the graphs of the contract
     /// with smooth made-up numbers that depend on each row's inputs only, counts rows and tokens, and
-    /// (as a GPU would) finishes a scheduled run only after <c>latency</c> polls.
+    /// (as a GPU would) finishes a scheduled run only after <c>latency</c> polls. It also counts every time
+    /// <c>key_memory</c> crosses between host and engine: a keys run that writes it into Core's array, a frame
+    /// run that reads it from there.
     /// </summary>
-    internal sealed class StandInBackend : IInferenceBackend
+    internal class StandInBackend : IInferenceBackend
     {
         private readonly int _latency;
 
@@ -354,26 +474,73 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         public long Tokens { get; private set; }
 
-        public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs) => new Binding(this, inputs, outputs);
+        /// <summary>Runs that wrote <c>key_memory</c> into a host array (the keys graph read back).</summary>
+        public long KeyMemoryHostReads { get; private set; }
+
+        /// <summary>Runs that read <c>key_memory</c> from a host array (the frame graph's upload).</summary>
+        public long KeyMemoryHostUploads { get; private set; }
+
+        public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs) => new Binding(this, inputs, outputs, null);
 
         public void Dispose()
         {
         }
 
-        private sealed class Binding : IAsyncInferenceBinding
+        /// <summary>Device memory of <see cref="DeviceStandInBackend"/>: a pooled buffer, known to Core only as a handle.</summary>
+        internal sealed class DeviceTensor : IDeviceTensor
+        {
+            private readonly DeviceStandInBackend _owner;
+
+            public DeviceTensor(DeviceStandInBackend owner, int length)
+            {
+                _owner = owner;
+                Data = new float[length];
+            }
+
+            public float[] Data { get; }
+
+            /// <summary>Bumped at every rent: a binding that kept an older lease holds a released tensor.</summary>
+            public int Lease { get; set; }
+
+            public bool Held { get; set; }
+
+            public void Dispose()
+            {
+                if (!Held) throw new InvalidOperationException("device tensor disposed twice");
+                Held = false;
+                _owner.Return(this);
+            }
+        }
+
+        protected class Binding : IAsyncInferenceBinding
         {
             private readonly StandInBackend _owner;
             private readonly Dictionary<string, InferenceTensor> _tensors = new Dictionary<string, InferenceTensor>();
             private readonly IReadOnlyList<InferenceTensor> _outputs;
             private int _polls = -1;
 
-            public Binding(StandInBackend owner, IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
+            public Binding(StandInBackend owner, IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs, string? onDevice)
             {
                 _owner = owner;
-                foreach (InferenceTensor t in inputs) _tensors[t.Name] = t;
-                foreach (InferenceTensor t in outputs) _tensors[t.Name] = t;
+                foreach (InferenceTensor t in inputs)
+                {
+                    owner.Description.RequireInput(t);
+                    _tensors[t.Name] = t;
+                }
+
+                foreach (InferenceTensor t in outputs)
+                {
+                    owner.Description.RequireOutput(t);
+                    _tensors[t.Name] = t;
+                }
+
+                if (onDevice != null && !_tensors.ContainsKey(onDevice)) throw new ArgumentException($"no tensor '{onDevice}' to keep on the device");
+                OnDevice = onDevice;
                 _outputs = outputs;
             }
+
+            /// <summary>The tensor kept on the device, or null.</summary>
+            protected string? OnDevice { get; }
 
             public void Run()
             {
@@ -393,6 +560,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             public void Schedule()
             {
                 Count();
+                Scheduled();
                 _polls = 0;
             }
 
@@ -409,12 +577,25 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
             }
 
+            /// <summary>What a run does when it is scheduled (device bindings check their input's lease).</summary>
+            protected virtual void Scheduled()
+            {
+            }
+
+            /// <summary>Where a run writes key_memory (null: the bound host array).</summary>
+            protected virtual float[]? DeviceOutput(int length) => null;
+
+            /// <summary>Where a run reads key_memory (null: the bound host array).</summary>
+            protected virtual float[]? DeviceInput(int length) => null;
+
             private void Compute()
             {
                 long[] gap = _tensors[TensorNames.GapLength].Longs!;
                 int rows = (int)_tensors[TensorNames.GapLength].Shape[0];
-                foreach (InferenceTensor o in _outputs)
+                bool uploaded = false;
+                for (int i = 0; i < _outputs.Count; i++)
                 {
+                    InferenceTensor o = _outputs[i];
                     switch (o.Name)
                     {
                         case TensorNames.ContractVersion: o.Longs![0] = 2; break;
@@ -425,9 +606,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                             float[] f = _tensors[TensorNames.KeyFeatures].Floats!;
                             int fw = (int)(_tensors[TensorNames.KeyFeatures].Length / rows);
                             int mw = o.Length / rows;
+                            float[]? device = OnDevice == o.Name ? DeviceOutput(o.Length) : null;
+                            float[] dst = device ?? o.Floats!;
+                            if (device == null) _owner.KeyMemoryHostReads++;
                             for (int r = 0; r < rows; r++)
                             {
-                                for (int e = 0; e < mw; e++) o.Floats![r * mw + e] = (float)(0.5 * Math.Sin(0.37 * e + 3 * f[r * fw + e % fw] + 0.1 * gap[r]));
+                                for (int e = 0; e < mw; e++) dst[r * mw + e] = (float)(0.5 * Math.Sin(0.37 * e + 3 * f[r * fw + e % fw] + 0.1 * gap[r]));
                             }
 
                             break;
@@ -437,12 +621,27 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                         case TensorNames.Rotation6DDelta:
                         {
                             InferenceTensor? memory = _tensors.TryGetValue(TensorNames.KeyMemory, out InferenceTensor? m) ? m : null;
+                            float[]? source = null;
+                            if (memory != null)
+                            {
+                                source = OnDevice == memory.Name ? DeviceInput(memory.Length) : null;
+                                if (source == null && !uploaded)
+                                {
+                                    uploaded = true;
+                                    _owner.KeyMemoryHostUploads++;
+                                }
+
+                                source ??= memory.Floats!;
+                            }
+
                             long[] query = _tensors[TensorNames.QueryFrameIndices].Longs!;
                             int n = (int)(_tensors[TensorNames.QueryFrameIndices].Length / rows);
                             int width = o.Length / (rows * n);
                             for (int r = 0; r < rows; r++)
                             {
-                                double seed = memory == null ? 0 : memory.Floats![r * (memory.Length / rows)];
+                                // Each row's memory decides its frames (its first and a middle element).
+                                int mw = memory == null ? 0 : memory.Length / rows;
+                                double seed = source == null ? 0 : source[r * mw] + 0.5 * source[r * mw + mw / 2];
                                 for (int q = 0; q < n; q++)
                                 {
                                     double x = 0.25 * query[r * n + q];
@@ -458,6 +657,106 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                         }
                     }
                 }
+            }
+        }
+    }
+
+    /// <summary>
+    /// <see cref="StandInBackend"/> that can keep <c>key_memory</c> on its "device" (<see cref="IDeviceTensorBackend"/>,
+    /// as Sentis on a GPU does): pooled buffers behind handles, whose uses after release, double releases, wrong
+    /// shapes and leaks the tests see.
+    /// </summary>
+    internal sealed class DeviceStandInBackend : StandInBackend, IDeviceTensorBackend
+    {
+        private readonly List<DeviceTensor> _free = new List<DeviceTensor>();
+
+        public DeviceStandInBackend(ModelDescription description, int latency)
+            : base(description, latency)
+        {
+        }
+
+        /// <summary>Device tensors handed to Core and not released yet.</summary>
+        public int DeviceTensorsHeld { get; private set; }
+
+        /// <summary>Most device tensors held at once.</summary>
+        public int MostDeviceTensorsHeld { get; private set; }
+
+        public IDeviceTensorBinding BindOnDevice(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs, string onDevice) =>
+            new DeviceBinding(this, inputs, outputs, onDevice);
+
+        internal DeviceTensor Rent(int length)
+        {
+            DeviceTensor? t = null;
+            for (int i = 0; i < _free.Count; i++)
+            {
+                if (_free[i].Data.Length != length) continue;
+                t = _free[i];
+                _free.RemoveAt(i);
+                break;
+            }
+
+            t ??= new DeviceTensor(this, length);
+            t.Lease++;
+            t.Held = true;
+            DeviceTensorsHeld++;
+            MostDeviceTensorsHeld = Math.Max(MostDeviceTensorsHeld, DeviceTensorsHeld);
+            return t;
+        }
+
+        internal void Return(DeviceTensor t)
+        {
+            DeviceTensorsHeld--;
+            _free.Add(t);
+        }
+
+        private sealed class DeviceBinding : Binding, IDeviceTensorBinding
+        {
+            private readonly DeviceStandInBackend _owner;
+            private DeviceTensor? _input;
+            private int _inputLease;
+            private DeviceTensor? _output;
+
+            public DeviceBinding(DeviceStandInBackend owner, IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs, string onDevice)
+                : base(owner, inputs, outputs, onDevice)
+            {
+                _owner = owner;
+            }
+
+            public void SetInput(IDeviceTensor tensor)
+            {
+                _input = (DeviceTensor)tensor;
+                _inputLease = _input.Lease;
+            }
+
+            public IDeviceTensor TakeOutput()
+            {
+                DeviceTensor t = _output ?? throw new InvalidOperationException("no completed run's output to take");
+                _output = null;
+                return t;
+            }
+
+            protected override void Scheduled() => Check();
+
+            protected override float[]? DeviceOutput(int length)
+            {
+                // An output not taken is released by the next run, as a real engine would reuse it.
+                _output?.Dispose();
+                _output = _owner.Rent(length);
+                return _output.Data;
+            }
+
+            protected override float[]? DeviceInput(int length)
+            {
+                if (_input == null) throw new InvalidOperationException("a run of a device input without SetInput");
+                Check();
+                if (_input.Data.Length != length) throw new InvalidOperationException($"device key_memory of {_input.Data.Length} elements bound where {length} are expected");
+                return _input.Data;
+            }
+
+            private void Check()
+            {
+                if (_input == null) return;
+                if (!_input.Held || _input.Lease != _inputLease) throw new InvalidOperationException("the device key_memory was released before the run that reads it completed");
             }
         }
     }

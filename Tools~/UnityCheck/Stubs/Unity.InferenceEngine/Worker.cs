@@ -13,6 +13,8 @@ namespace Unity.InferenceEngine
 
         public Tensor PeekOutput(string name) => throw null!;
 
+        public void CopyOutput(string name, ref Tensor tensor) => throw null!;
+
         public void Dispose() => throw null!;
     }
 }
