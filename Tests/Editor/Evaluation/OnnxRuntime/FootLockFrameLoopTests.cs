@@ -27,13 +27,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     {
         private static readonly double[] RequestTimes = { 6.0, 9.0, 12.0, 15.0, 18.0, 21.0, 24.0, 27.0 };
 
-        // Issue 18 asks for ≤ 0.5 on a walking character's transition. Measured with the shipped model: × 0.59 (1 s
-        // transitions, 60 fps), × 0.57 (144 fps), × 0.81 (0.5 s ones); with the previous model, on which the playback
-        // settings were chosen, × 0.52 and × 0.69. The bounds guard what is reached (a regression fails); they are not
-        // that goal.
-        [TestCase(60.0, 1.0, 0.65)]
-        [TestCase(60.0, 0.5, 0.9)]
-        [TestCase(144.0, 1.0, 0.65)]
+        // Issue 18 asks for ≤ 0.5 on a walking character's transition. Measured with the shipped model (the CMU model's
+        // sixth stage): × 0.69 (1 s transitions, 60 fps), × 0.68 (144 fps), × 0.77 (0.5 s ones); with its fifth stage
+        // × 0.59, × 0.57 and × 0.81; with the model on which the playback settings were chosen × 0.52 and × 0.69. The
+        // ratio moves with the model's motion more than with the locker. The bounds guard what is reached (a
+        // regression of the locker fails); they are not that goal.
+        [TestCase(60.0, 1.0, 0.75)]
+        [TestCase(60.0, 0.5, 0.85)]
+        [TestCase(144.0, 1.0, 0.75)]
         public void LockingCutsTheSkatingOfAWalkingCharactersTransitions(double fps, double seconds, double most)
         {
             BvhAnimation walk = LoadWalk();
