@@ -247,17 +247,7 @@ namespace DeltaInterpolator.Core.Baking
         {
             if (_locker == null || !ReferenceEquals(_locker.Rig.Skeleton, clip.Skeleton) && !_locker.Rig.Skeleton.HasSameHierarchy(clip.Skeleton))
             {
-                FootRig rig;
-                try
-                {
-                    rig = FootRig.ForModel(clip.Skeleton);
-                }
-                catch (ArgumentException e)
-                {
-                    throw new InvalidOperationException($"foot locking: {e.Message}; bake without foot locking (BakeSettings.FootLocking = null) for a skeleton without them", e);
-                }
-
-                _locker = new FootLocker(rig, Settings.FootLocking);
+                _locker = FootLocker.ForBake(() => FootRig.ForModel(clip.Skeleton), Settings.FootLocking!, "the model's skeleton");
             }
 
             int[] keys = plan.KeyArray;

@@ -88,6 +88,26 @@ namespace DeltaInterpolator.Core.Feet
             StandingHeights(rig, _maxPlantedHeight);
         }
 
+        /// <summary>
+        /// A locker for a bake (<see cref="Baking.ClipBaker"/>, <see cref="Workflows.InbetweenBake"/>): a skeleton whose
+        /// legs cannot be found or are not joint chains is refused with one message that says how to bake without locking.
+        /// </summary>
+        /// <param name="rig">Makes the rig (throws <see cref="ArgumentException"/> for a skeleton without usable legs).</param>
+        /// <param name="settings">The bake's foot-locking settings.</param>
+        /// <param name="where">The skeleton, for the message ("the model's skeleton", "the rig").</param>
+        /// <exception cref="InvalidOperationException">The rig has no usable legs.</exception>
+        internal static FootLocker ForBake(Func<FootRig> rig, FootLockSettings settings, string where)
+        {
+            try
+            {
+                return new FootLocker(rig(), settings);
+            }
+            catch (ArgumentException e)
+            {
+                throw new InvalidOperationException($"foot locking on {where}: {e.Message}; bake without foot locking (BakeSettings.FootLocking = null) for a skeleton without them", e);
+            }
+        }
+
         /// <summary>The rig.</summary>
         public FootRig Rig => _rig;
 

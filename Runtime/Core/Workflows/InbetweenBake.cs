@@ -54,8 +54,8 @@ namespace DeltaInterpolator.Core.Workflows
                 BakeSettings settings = methods[i].Settings;
                 if (map != null && settings.FootLocking != null)
                 {
-                    rigLockers[i] = Locker(() => FootRig.ForSource(map), settings.FootLocking, "the rig");
-                    modelLockers[i] = Locker(() => FootRig.ForModel(onModel.Skeleton), settings.FootLocking, "the model's skeleton");
+                    rigLockers[i] = FootLocker.ForBake(() => FootRig.ForSource(map), settings.FootLocking, "the rig");
+                    modelLockers[i] = FootLocker.ForBake(() => FootRig.ForModel(onModel.Skeleton), settings.FootLocking, "the model's skeleton");
                     settings = settings.WithFootLocking(null);
                 }
 
@@ -80,19 +80,6 @@ namespace DeltaInterpolator.Core.Workflows
             }
 
             return new BakeRun(rig, onModel, (int[])rigKeys.Clone(), modelKeys, results);
-        }
-
-        /// <summary>A foot locker for a rig, its refusal (legs that are not joint chains) named like the bake's own.</summary>
-        private static FootLocker Locker(Func<FootRig> rig, FootLockSettings settings, string where)
-        {
-            try
-            {
-                return new FootLocker(rig(), settings);
-            }
-            catch (ArgumentException e)
-            {
-                throw new InvalidOperationException($"foot locking on {where}: {e.Message}; bake without foot locking (BakeSettings.FootLocking = null) for a skeleton without them", e);
-            }
         }
 
         /// <summary>Key frames relative to the first (the baked clips span the first to the last key).</summary>
