@@ -18,6 +18,7 @@ namespace DeltaInterpolator.Cli.Baking
         public string OutFull { get; set; } = "";
         public bool Force { get; set; }
         public int? ReferenceFrame { get; set; }
+        public Core.Retargeting.UpAxis Up { get; set; }
         public string? MapPath { get; set; }
         public double? InputFps { get; set; }
         public int FromFrame { get; set; }

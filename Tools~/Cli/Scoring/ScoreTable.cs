@@ -15,7 +15,16 @@ namespace DeltaInterpolator.Cli.Scoring
                 .Title($"[bold]Keys every {every} input frames[/]: mean joint position error ÷ leg length, and L2Q, over non-key frames (× SLERP in brackets; lower is better)");
             table.AddColumn("File");
             table.AddColumn(new TableColumn("Frames").RightAligned());
-            foreach (string n in sheet.Methods) table.AddColumn(new TableColumn(Markup.Escape(n) + " pos / L2Q").RightAligned());
+            // Whole method names in a legend above the table, numbers in the headers: a column narrower than a model's
+            // name would cut it ("DeltaInterpola…"), and two exports differ only at the end of their names.
+            var legend = new List<string>();
+            for (int i = 0; i < methods; i++)
+            {
+                legend.Add(string.Format(CultureInfo.InvariantCulture, "[{0}] {1}", i + 1, sheet.Methods[i]));
+                table.AddColumn(new TableColumn(string.Format(CultureInfo.InvariantCulture, "[[{0}]] pos / L2Q", i + 1)).RightAligned());
+            }
+
+            foreach (string line in legend) AnsiConsole.WriteLine(line);
             void AddRow(string label, IReadOnlyList<double> p, IReadOnlyList<double> q, int frames, bool bold)
             {
                 var cells = new List<string> { bold ? $"[bold]{Markup.Escape(label)}[/]" : Markup.Escape(label), frames.ToString("N0", CultureInfo.InvariantCulture) };

@@ -68,7 +68,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 ? BakeInput.CheckFrom(r.Keys, r.FromFrame, r.Input)
                 : BakeInput.Every(r.Every!.Value, animation.Motion, r.FromFrame, model.Contract, r.Input);
 
-            BakeRun run = BakeInput.Bake(animation, r.Input, keys, model.Contract, BakeInput.ModelAndSlerp(model, r.Policy, r.FilledContext, r.Feet), r.ReferenceFrame, jointMap);
+            BakeRun run = BakeInput.Bake(animation, r.Input, keys, model.Contract, BakeInput.ModelAndSlerp(model, r.Policy, r.FilledContext, r.Feet), r.ReferenceFrame, jointMap, up: r.Up);
             // Before OUT.bvh, the scores or the preview: a NaN or overflow is refused, never written or drawn.
             MotionChecks.RequireFinitePositions(run["Model"].OnRig, r.Input, "the model's result");
             MotionChecks.RequireFinitePositions(run["SLERP"].OnRig, r.Input, "the SLERP result");

@@ -56,6 +56,8 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "K",
         };
 
+        private readonly Option<string> _up = UpAxisArgument.Create();
+
         private readonly Option<int?> _targetReferenceFrame = new Option<int?>("--target-reference-frame")
         {
             Description = "With --to OTHER.bvh: the frame of OTHER that is its reference pose and supplies its unmapped joints; default as for --reference-frame",
@@ -109,6 +111,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_out);
             command.Options.Add(_map);
             command.Options.Add(_referenceFrame);
+            command.Options.Add(_up);
             command.Options.Add(_targetReferenceFrame);
             command.Options.Add(_fps);
             command.Options.Add(_inputFps);
@@ -148,6 +151,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"inbetween retarget: --scale {scale.Value.ToString(CultureInfo.InvariantCulture)}; expected a positive number of model units per input unit");
             }
 
+            UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "retarget");
             RequireFile(input, "the BVH file to retarget");
             if (!toModel) RequireFile(to, "'model' or a BVH file whose skeleton receives the motion");
             if (mapPath != null) RequireFile(mapPath, "a JSON joint map");
@@ -164,7 +168,7 @@ namespace DeltaInterpolator.Cli.Verbs
             var request = new RetargetRequest
             {
                 ReferenceFrame = parse.GetValue(_referenceFrame), FromFrame = fromFrame ?? 0, InputFps = inputFps, OutputFps = fps, Scale = scale,
-                Map = userMap, TargetReferenceFrame = parse.GetValue(_targetReferenceFrame),
+                Map = userMap, TargetReferenceFrame = parse.GetValue(_targetReferenceFrame), Up = up,
             };
             RetargetResult retargeted;
             BvhAnimation result;

@@ -60,6 +60,8 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly OutputOptions _output = new OutputOptions();
 
+        private readonly Option<string> _up = UpAxisArgument.Create();
+
         /// <inheritdoc />
         public Command CreateCommand()
         {
@@ -75,6 +77,8 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_models);
             command.Options.Add(_only);
             command.Options.Add(_json);
+            _up.Description = UpAxisArgument.Help + " For files whose manifest names no \"up\".";
+            command.Options.Add(_up);
             _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
@@ -85,6 +89,7 @@ namespace DeltaInterpolator.Cli.Verbs
             string[] data = parse.GetValue(_data) ?? Array.Empty<string>();
             int every = parse.GetValue(_every);
             if (every < 1) throw new CliErrors.UsageException($"inbetween score: --every {every}; expected 1 or more frames");
+            Core.Retargeting.UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "score");
             var models = new List<string>(parse.GetValue(_models) ?? Array.Empty<string>());
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
             foreach (string m in models) Core.IO.InputFile.Check(m, "an exported model (NAME.onnx)");
@@ -116,7 +121,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     var task = ctx.AddTask("Baking files", maxValue: entries.Count);
                     foreach (DataManifest.Entry e in entries)
                     {
-                        sheet.Add(ScoreFile(e, every, inbetweeners));
+                        sheet.Add(ScoreFile(e, every, inbetweeners, up));
                         task.Increment(1);
                     }
                 });
@@ -141,7 +146,7 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         /// <summary>One file baked with every model (and SLERP once, with the first model's keys) and scored per leg length.</summary>
-        private static ScoreRow ScoreFile(DataManifest.Entry e, int every, List<Inbetweener> models)
+        private static ScoreRow ScoreFile(DataManifest.Entry e, int every, List<Inbetweener> models, Core.Retargeting.UpAxis up)
         {
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(e.FilePath), e.Fps);
             var position = new double[models.Count + 1];
@@ -155,7 +160,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 JointMap? map = BakeInput.LoadMap(e.Map, animation, models[i].Contract);
                 int[] keys = BakeInput.Every(every, animation.Motion, e.FromFrame, models[i].Contract, e.FilePath);
                 BakeMethod[] methods = i == 0 ? BakeInput.ModelAndSlerp(models[i], null, true, null) : new[] { BakeMethod.Model(models[i]) };
-                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true);
+                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up);
                 BakeScores scores = BakeScores.Measure(animation.Motion, run);
                 leg = scores.LegLength;
                 frames = scores["Model"].Accuracy.Frames;

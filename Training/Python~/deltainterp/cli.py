@@ -43,6 +43,7 @@ def _prepare(sub) -> None:
     p.add_argument("--reference-frame", type=int, help="the frame whose pose is the reference (manifest default)")
     p.add_argument("--input-fps", type=float, help="every file's true frame rate (manifest default)")
     p.add_argument("--map", help="a JSON joint map for every file (manifest default; the format `inbetween retarget --map` reads)")
+    p.add_argument("--up", help="every file's up axis: auto, y or z (manifest default \"up\"; `inbetween retarget --up`)")
     p.add_argument("--time-scales", default="",
                    help="augment with time-scaled copies, e.g. 0.8,1.25 (1.25 = played 25%% slower); trained on, never validated on")
     p.add_argument("--model", help="the .onnx whose skeleton and frame rate are the target (default: the tool's)")
@@ -54,7 +55,7 @@ def _prepare(sub) -> None:
 
 def _is_lafan1_folder(args) -> bool:
     if len(args.data) != 1 or args.holdout or any(getattr(args, k) is not None for k in
-                                                  ("from_frame", "reference_frame", "input_fps", "map")):
+                                                  ("from_frame", "reference_frame", "input_fps", "map", "up")):
         return False
     folder = Path(args.data[0])
     if not folder.is_dir() or (folder / "inbetween-data.json").exists():
@@ -89,8 +90,11 @@ def _run_prepare(args) -> int:
             raise ValueError(f"--time-scales: {v}; expected factors from 0.25 to 4")
     if args.jobs < 1 or args.jobs > 64:
         raise ValueError(f"--jobs {args.jobs}; expected 1 to 64")
+    from .datasets import UP_AXES
+    if args.up is not None and args.up not in UP_AXES:
+        raise ValueError(f"--up {args.up[:40]!r}; expected auto, y or z")
     options = {"from_frame": args.from_frame, "reference_frame": args.reference_frame, "fps": args.input_fps,
-               "map": args.map}
+               "map": args.map, "up": args.up}
     inputs = [d for d in args.data if Path(d).is_file()] + ([args.map] if args.map else [])
     for source in [open_source(d) for d in args.data]:  # the output must not be one of the BVH inputs
         inputs += [str(p.path) for p in plan_files(source, options, args.holdout, [])]
