@@ -46,7 +46,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<string?> _map = new Option<string?>("--map")
         {
-            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\", \"of\", \"joints\"], …} for names the built-in maps (LaFAN1, CMU, Mixamo, Unity) miss",
+            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\", \"of\", \"joints\"], …} for names the built-in maps (LaFAN1, CMU, Mixamo, Unity HumanBodyBones, Poser, 3ds Max Biped Bip01_*) miss",
             HelpName = "MAP.json",
         };
 
