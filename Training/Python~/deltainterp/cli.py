@@ -65,6 +65,22 @@ def _is_lafan1_folder(args) -> bool:
     return bool(names) and all(re.fullmatch(r"[A-Za-z]+\d*_subject\d+\.bvh", n) for n in names)
 
 
+def _export_name(given, checkpoint: str, exported: str) -> str:
+    """The exported model's name: --name, else an exported model's own, else after the run (its folder);
+    never a data set's it was not trained on (the default was once DeltaInterpolator-LaFAN1 for any run)."""
+    import re
+    if given is not None:
+        if not given.strip() or len(given) > 100 or any(ord(c) < 32 or ord(c) == 127 for c in given):
+            raise ValueError(f"--name {given[:40]!r}; expected a model name of 1 to 100 printable characters")
+        return given
+    if exported:
+        return exported
+    run = re.sub(r"[^A-Za-z0-9._-]+", "-", Path(checkpoint).resolve().parent.name).strip("-.")
+    if not run:
+        raise ValueError(f"{checkpoint}: no run folder to name the model after; expected --name NAME")
+    return f"DeltaInterpolator-{run}"
+
+
 def _run_prepare(args) -> int:
     # Before any data is read: the output (existing without --force, or one of the named inputs) ...
     safe_output.check(args.out, args.force, [args.stats] + [d for d in args.data if Path(d).is_file()])
@@ -236,7 +252,8 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--checkpoint", required=True,
                    help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")
     p.add_argument("--out", required=True, help="output path ending in .onnx")
-    p.add_argument("--name", default="DeltaInterpolator-LaFAN1", help="model name in the metadata")
+    p.add_argument("--name", help="model name in the metadata (default: an exported model's own name, else "
+                                    "DeltaInterpolator-RUN after the checkpoint's run folder Training/runs/RUN)")
     p.add_argument("--force", action="store_true", help="replace existing OUT, .keys.onnx and .frame.onnx files")
 
     p = sub.add_parser(
@@ -358,8 +375,9 @@ def _run_evaluate_export_fixtures(args) -> int:
             loaded = load_exported_model(args.checkpoint)
         else:
             loaded = load_checkpoint(args.checkpoint)
-        report = export_model(loaded, args.out, args.name)
-        print(f"{args.name}: {report.parameters:,} parameters, opset 15, checked against torch "
+        name = _export_name(args.name, args.checkpoint, loaded.name)
+        report = export_model(loaded, args.out, name)
+        print(f"{name} (trained on: {loaded.data_description or 'not recorded'}): {report.parameters:,} parameters, opset 15, checked against torch "
               f"(max |diff| {report.max_difference:.2g})")
         for kind, path in report.paths.items():
             print(f"  {kind:<5} {path}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")
