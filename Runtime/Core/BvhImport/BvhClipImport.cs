@@ -24,10 +24,11 @@ namespace DeltaInterpolator.Core.BvhImport
         /// <exception cref="DataFormatException">The unit cannot be told (no leg in the rest pose); the message names the file.</exception>
         /// <exception cref="InputPathException">The path is not a regular file.</exception>
         /// <exception cref="System.IO.IOException">The file cannot be read.</exception>
-        public static BvhImportResult ImportFile(string path, double metresPerUnit = 0)
+        /// <param name="up">The file's up axis (auto: decided from the file, as <c>inbetween --up</c>); a Z-up file is stood on Y.</param>
+        public static BvhImportResult ImportFile(string path, double metresPerUnit = 0, UpAxis up = UpAxis.Auto)
         {
             byte[] data = InputFile.ReadAllBytes(path, "a .bvh file");
-            return Import(data, path, metresPerUnit);
+            return Import(data, path, metresPerUnit, up);
         }
 
         /// <summary>Converts BVH bytes; <paramref name="sourceName"/> names them in messages and gives the clip its name.</summary>
@@ -36,10 +37,12 @@ namespace DeltaInterpolator.Core.BvhImport
         /// <param name="metresPerUnit">Metres per unit of the file; 0 (or less) to tell it from the skeleton's size.</param>
         /// <exception cref="BvhFormatException">The data is not valid BVH; the message names the source and line.</exception>
         /// <exception cref="DataFormatException">The unit cannot be told (no leg in the rest pose); the message names the source.</exception>
-        public static BvhImportResult Import(byte[] data, string sourceName, double metresPerUnit = 0)
+        /// <param name="up">The file's up axis (auto: decided from the file, as <c>inbetween --up</c>); a Z-up file is stood on Y.</param>
+        public static BvhImportResult Import(byte[] data, string sourceName, double metresPerUnit = 0, UpAxis up = UpAxis.Auto)
         {
             string source = string.IsNullOrEmpty(sourceName) ? "<bvh>" : sourceName;
             BvhAnimation animation = BvhReader.Parse(data, source);
+            UpAxisDecision? upDecision = StandOnY(ref animation, up);
             Skeleton skeleton = animation.Skeleton;
             MotionClip motion = animation.Motion;
             int jointCount = skeleton.JointCount;
@@ -80,7 +83,30 @@ namespace DeltaInterpolator.Core.BvhImport
             double frameRate = FrameRate(motion.FrameTime);
             (float[] positionsUnity, float[] rotationsUnity) = Frames(motion, scale);
             IReadOnlyList<ClipCurve> curves = Curves(joints, motion.FrameCount, frameRate, positionsUnity, rotationsUnity);
-            return new BvhImportResult(source, name, rootName, frameRate, motion.FrameCount, scale, legLength, joints, figure, humanoid, positionsUnity, rotationsUnity, curves);
+            return new BvhImportResult(source, name, rootName, frameRate, motion.FrameCount, scale, legLength, joints, figure, humanoid, positionsUnity, rotationsUnity, curves)
+            {
+                UpAxis = upDecision?.Description,
+                Turned = upDecision != null && !upDecision.IsIdentity,
+            };
+        }
+
+        /// <summary>The animation stood on Y by <paramref name="up"/>'s decision (its rest pose and motion judged separately), with end sites turned like the bones.</summary>
+        private static UpAxisDecision? StandOnY(ref BvhAnimation animation, UpAxis up)
+        {
+            JointMap? body = UpAxisDetection.BodyMap(animation.Skeleton);
+            if (body == null) return null; // no hips, head and feet to judge by: the file is taken as it is
+            UpAxisDecision decided = UpAxisDecision.Decide(up, ReferencePose.Zero(animation.Skeleton), false, animation.Motion, body);
+            if (decided.IsIdentity) return decided;
+            QuaternionD r = UpAxisDetection.ToYUp(decided.ReferenceUp);
+            var sites = new Vector3D[animation.EndSites.Count][];
+            for (int j = 0; j < sites.Length; j++)
+            {
+                sites[j] = new Vector3D[animation.EndSites[j].Length];
+                for (int k = 0; k < sites[j].Length; k++) sites[j][k] = Quaternions.Apply(r, animation.EndSites[j][k]);
+            }
+
+            animation = new BvhAnimation(decided.Apply(animation.Motion), animation.JointChannels, sites, animation.SourceName);
+            return decided;
         }
 
         /// <summary>Frames per second from a frame time, whole when within 0.01 of a whole number.</summary>

@@ -78,6 +78,38 @@ namespace DeltaInterpolator.Core.Retargeting
             return new UpAxisDecision(requested, referenceUp, motionUp, description);
         }
 
+        /// <summary>
+        /// The clip itself stood on Y, for tools that keep the file's skeleton (the Unity importer): rest offsets
+        /// turned by the rest pose's rotation R (so the rest pose stands), non-root local rotations conjugated by
+        /// it (R q R⁻¹), the root's rotation W q R⁻¹ and position W p with W the motion's rotation, so every
+        /// joint's world position is W times the file's.
+        /// </summary>
+        public MotionClip Apply(MotionClip clip)
+        {
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (IsIdentity) return clip;
+            QuaternionD r = UpAxisDetection.ToYUp(ReferenceUp), w = MotionToYUp, rBack = Quaternions.Conjugate(r);
+            Skeleton s = clip.Skeleton;
+            int n = s.JointCount;
+            var offsets = new double[3 * n];
+            for (int j = 0; j < n; j++) Quaternions.Apply(r, Vector3D.Read(s.OffsetSpan, 3 * j)).Write(offsets, 3 * j);
+            var turned = new Skeleton(s.Names, s.Parents, offsets);
+            var positions = new double[clip.LocalPositions.Length];
+            var rotations = new double[clip.LocalRotations.Length];
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                for (int j = 0; j < n; j++)
+                {
+                    int p = clip.PositionIndex(f, j), q = clip.RotationIndex(f, j);
+                    Quaternions.Apply(j == 0 ? w : r, Vector3D.Read(clip.LocalPositions, p)).Write(positions, p);
+                    QuaternionD local = Quaternions.Multiply(j == 0 ? w : r, Quaternions.Multiply(QuaternionD.Read(clip.LocalRotations, q), rBack));
+                    Quaternions.Normalize(local).Write(rotations, q);
+                }
+            }
+
+            return new MotionClip(turned, clip.FrameCount, clip.FrameTime, positions, rotations);
+        }
+
         /// <summary>The reference pose stood on Y: its root turned by the reference's rotation to Y up.</summary>
         public ReferencePose Turn(ReferencePose reference)
         {

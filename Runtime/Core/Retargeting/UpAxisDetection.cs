@@ -47,6 +47,13 @@ namespace DeltaInterpolator.Core.Retargeting
             return QuaternionD.Identity;
         }
 
+        /// <summary>The first built-in joint map that finds hips, head and feet in <paramref name="skeleton"/> (for tools without a model skeleton), or null.</summary>
+        public static JointMap? BodyMap(Skeleton skeleton)
+        {
+            foreach (JointMap map in JointMap.BuiltIn) if (BodyJoints.Find(skeleton, map) != null) return map;
+            return null;
+        }
+
         /// <summary>The up axis of a reference pose (Y or Z), or null when the map finds no hips, head or feet in it.</summary>
         public static UpAxis? OfPose(ReferencePose pose, JointMap map)
         {

@@ -40,16 +40,16 @@ namespace DeltaInterpolator.Cli.Baking
             return map;
         }
 
-        /// <summary>Every <paramref name="interval"/> frames from <paramref name="first"/> (<see cref="BakeKeys.Every"/>).</summary>
-        public static int[] Every(int interval, MotionClip motion, int first, ModelContract contract, string input)
+        /// <summary>Keys <paramref name="spacing"/> apart from <paramref name="first"/> (<see cref="BakeKeys.Every(KeySpacing, MotionClip, int, ModelContract)"/>).</summary>
+        public static int[] Every(KeySpacing spacing, MotionClip motion, int first, ModelContract contract, string input)
         {
             try
             {
-                return BakeKeys.Every(interval, motion, first, contract);
+                return BakeKeys.Every(spacing, motion, first, contract);
             }
             catch (KeyLayoutException e)
             {
-                throw new CliErrors.UsageException($"{input}: --every {interval}: {e.Message}");
+                throw new CliErrors.UsageException($"{input}: --every {spacing}: {e.Message}");
             }
         }
 

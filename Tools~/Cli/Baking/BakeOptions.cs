@@ -27,10 +27,10 @@ namespace DeltaInterpolator.Cli.Baking
             HelpName = "F,F,...",
         };
 
-        public readonly Option<int?> _every = new Option<int?>("--every")
+        public readonly Option<string?> _every = new Option<string?>("--every")
         {
-            Description = "A key every K frames: 0, K, 2K, … and the file's last frame.",
-            HelpName = "K",
+            Description = "A key every K: input frames by default (60), model frames with 'mf' (15mf) or seconds with 's' (0.5s); keys at equal times from the first usable frame, the file's last frame a key, and the last gap kept within the model's trained minimum of missing frames (the key before it moved to the middle of the last two gaps, or dropped). The spacing is printed in all three units.",
+            HelpName = "K|Kmf|Xs",
         };
 
         public readonly Option<string> _method = new Option<string>("--method")
@@ -150,7 +150,7 @@ namespace DeltaInterpolator.Cli.Baking
             var r = new BakeRequest
             {
                 Input = parse.GetValue(_input)!,
-                Every = parse.GetValue(_every),
+                Every = EveryArgument.Parse(parse.GetValue(_every), "bake"),
                 Method = parse.GetValue(_method)!,
                 OutPath = parse.GetValue(_out)!,
                 Force = parse.GetValue(_output.Force),

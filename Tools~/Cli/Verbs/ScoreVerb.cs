@@ -6,6 +6,7 @@ using System.IO;
 using System.Text;
 using DeltaInterpolator.Cli.Baking;
 using DeltaInterpolator.Cli.Scoring;
+using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
@@ -31,10 +32,10 @@ namespace DeltaInterpolator.Cli.Verbs
             Arity = ArgumentArity.OneOrMore,
         };
 
-        private readonly Option<int> _every = new Option<int>("--every")
+        private readonly Option<string> _every = new Option<string>("--every")
         {
-            Description = "A key every K input frames from each file's first usable frame (as bake --every).",
-            HelpName = "K",
+            Description = "A key every K from each file's first usable frame, as bake --every: input frames by default (60), model frames with 'mf' (15mf) or seconds with 's' (0.5s).",
+            HelpName = "K|Kmf|Xs",
             Required = true,
         };
 
@@ -87,8 +88,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private int Run(ParseResult parse)
         {
             string[] data = parse.GetValue(_data) ?? Array.Empty<string>();
-            int every = parse.GetValue(_every);
-            if (every < 1) throw new CliErrors.UsageException($"inbetween score: --every {every}; expected 1 or more frames");
+            KeySpacing every = EveryArgument.Parse(parse.GetValue(_every), "score")!.Value;
             Core.Retargeting.UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "score");
             var models = new List<string>(parse.GetValue(_models) ?? Array.Empty<string>());
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
@@ -146,7 +146,7 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         /// <summary>One file baked with every model (and SLERP once, with the first model's keys) and scored per leg length.</summary>
-        private static ScoreRow ScoreFile(DataManifest.Entry e, int every, List<Inbetweener> models, Core.Retargeting.UpAxis up)
+        private static ScoreRow ScoreFile(DataManifest.Entry e, KeySpacing every, List<Inbetweener> models, Core.Retargeting.UpAxis up)
         {
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(e.FilePath), e.Fps);
             var position = new double[models.Count + 1];
