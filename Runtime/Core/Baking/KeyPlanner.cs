@@ -87,6 +87,34 @@ namespace DeltaInterpolator.Core.Baking
             return keys.ToArray();
         }
 
+        /// <summary>
+        /// Keys for a clip known by its length and frame rate (the editor baker's "every N" on an AnimationClip):
+        /// planned on the clip's frames from its start (<see cref="Plan"/>), then as times and as frames of the
+        /// model's timeline, where the bake runs.
+        /// </summary>
+        /// <param name="spacing">The spacing (any unit; input frames are the clip's).</param>
+        /// <param name="clipSeconds">The clip's length.</param>
+        /// <param name="clipFps">The clip's frame rate.</param>
+        /// <param name="modelFps">The model's frame rate.</param>
+        /// <param name="minMissing">The fewest missing model frames the model was trained on.</param>
+        /// <exception cref="KeyLayoutException">The clip is too short, or the spacing leaves nothing to fill.</exception>
+        public static (int[] ModelFrames, double[] Times) PlanClip(KeySpacing spacing, double clipSeconds, double clipFps, double modelFps, int minMissing)
+        {
+            if (!(clipFps > 0) || !(clipSeconds >= 0) || double.IsInfinity(clipSeconds)) throw new ArgumentOutOfRangeException(nameof(clipFps), "expected a positive frame rate and a finite length");
+            double frames = Math.Floor(clipSeconds * clipFps + 1e-6) + 1;
+            if (frames > int.MaxValue / 2) throw new KeyLayoutException($"a clip of {frames} frames", "expected a shorter clip");
+            int[] keys = Plan(spacing, (int)frames, 1.0 / clipFps, modelFps, 0, minMissing);
+            var times = new double[keys.Length];
+            var modelFrames = new int[keys.Length];
+            for (int i = 0; i < keys.Length; i++)
+            {
+                times[i] = keys[i] / clipFps;
+                modelFrames[i] = (int)Math.Round(times[i] * modelFps, MidpointRounding.AwayFromZero);
+            }
+
+            return (modelFrames, times);
+        }
+
         /// <summary>Missing model frames between two input-frame keys (as the bake rounds them onto the model's timeline).</summary>
         private static int Missing(int a, int b, double frameTime, double modelFps) =>
             (int)Math.Round((b - a) * frameTime * modelFps, MidpointRounding.AwayFromZero) - 1;

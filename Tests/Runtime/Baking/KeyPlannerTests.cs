@@ -113,5 +113,15 @@ namespace DeltaInterpolator.Tests.Baking
             var e = Assert.Throws<KeyLayoutException>(() => KeyPlanner.Plan(new KeySpacing(4, KeySpacingUnit.InputFrames), 500, 1.0 / 120, ModelFps, 0, MinMissing));
             Assert.That(e!.Message, Does.Contain("leaves no model frame to fill"));
         }
+
+        [Test]
+        public void TheEditorBakersClipKeysLieOnTheModelsTimelineAtTheSameTimesAsTheCliKeys()
+        {
+            // A 4 s mocap clip at 60 fps, a key every 0.5 s: the editor baker's keys (clip times → model frames).
+            (int[] frames, double[] times) = KeyPlanner.PlanClip(new KeySpacing(0.5, KeySpacingUnit.Seconds), 4.0, 60, ModelFps, MinMissing);
+            int[] cli = KeyPlanner.Plan(new KeySpacing(0.5, KeySpacingUnit.Seconds), 241, 1.0 / 60, ModelFps, 0, MinMissing);
+            Assert.That(times, Is.EqualTo(Array.ConvertAll(cli, k => k / 60.0)).Within(1e-12));
+            Assert.That(frames, Is.EqualTo(new[] { 0, 15, 30, 45, 60, 75, 90, 105, 120 }));
+        }
     }
 }
