@@ -43,7 +43,7 @@ namespace DeltaInterpolator.Core.Baking
         public KeySpacingUnit Unit { get; }
 
         /// <summary>How the CLI writes the three units: <c>60</c> (input frames, the default), <c>15mf</c> (model frames), <c>0.5s</c> (seconds).</summary>
-        public const string Syntax = "N (input frames, the default), Nmf (model frames) or Xs (seconds), e.g. 60, 15mf, 0.5s";
+        public const string Syntax = "a whole number of input frames (60, the default), of model frames (15mf), or seconds (0.5s)";
 
         /// <summary>
         /// Reads <paramref name="text"/>: a whole number of input frames (<c>60</c>, or <c>60f</c>), of model frames
