@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core;
@@ -334,7 +335,7 @@ namespace DeltaInterpolator.Unity
             _decoder = SharedDecoders.Acquire(model, factory);
             ModelContract contract = _decoder.Contract;
             CharacterRig rig = RigCollector.Collect(_animator, s, contract.Skeleton, out Core.Retargeting.JointMap jointMap, out _bones);
-            SkeletonJointMap map = rig.CreateJointMap(contract.Skeleton, jointMap);
+            SkeletonPoseConverter map = rig.CreatePoseConverter(contract.Skeleton, jointMap);
             RootBone = 0;
             _rootMotion = new RootMotion(rig.Armature) { Enabled = _animator.applyRootMotion };
             // The player reads these at each request and frame, so edited blend times apply without a rebuild.

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -147,7 +148,7 @@ namespace DeltaInterpolator.Benchmarks
         public static TransitionPlayer Player(TransitionDecoder decoder, PlaybackSettings settings, int seed, out Stream stream)
         {
             ModelContract contract = decoder.Contract;
-            var map = new NameJointMap(contract.Skeleton, contract.UnitScale, contract.Skeleton.Names);
+            var map = new NamePoseConverter(contract.Skeleton, contract.UnitScale, contract.Skeleton.Names);
             var player = new TransitionPlayer(map, decoder, settings);
             int bones = map.BoneCount;
             stream = new Stream { Root = new double[3], Rotations = new double[4 * bones] };

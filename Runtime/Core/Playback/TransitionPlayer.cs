@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.Threading;
@@ -42,7 +43,7 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>Frame times within this of the target time count as reaching it (rounding of summed frame times).</summary>
         private const double TimeTolerance = 1e-9;
 
-        private readonly IJointMap _map;
+        private readonly IPoseConverter _map;
         private readonly TransitionDecoder _decoder;
         private readonly PlaybackSettings _settings;
         private readonly List<TransitionJob> _jobs = new List<TransitionJob>();
@@ -81,7 +82,7 @@ namespace DeltaInterpolator.Core.Playback
         /// <param name="map">Character bones ↔ model joints; its joint count must be the model's.</param>
         /// <param name="decoder">Where the network runs (may be shared by many players of one model).</param>
         /// <param name="settings">Blend times and past frames; read at each request and frame.</param>
-        public TransitionPlayer(IJointMap map, TransitionDecoder decoder, PlaybackSettings? settings = null)
+        public TransitionPlayer(IPoseConverter map, TransitionDecoder decoder, PlaybackSettings? settings = null)
         {
             _map = map ?? throw new ArgumentNullException(nameof(map));
             _decoder = decoder ?? throw new ArgumentNullException(nameof(decoder));

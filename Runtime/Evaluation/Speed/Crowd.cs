@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -25,7 +26,7 @@ namespace DeltaInterpolator.Evaluation.Speed
         public Crowd(TransitionDecoder decoder, int characters)
         {
             ModelContract c = decoder.Contract;
-            var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+            var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
             _bones = c.JointCount;
             _roots = new double[characters][];
             _rotations = new double[characters][];

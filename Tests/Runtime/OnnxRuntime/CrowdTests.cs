@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -389,7 +390,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Decoder = decoder;
                 _seed = seed;
                 ModelContract c = decoder.Contract;
-                Map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                Map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _streams = new ArrayPoseStream[characters];
                 for (int i = 0; i < characters; i++)
                 {
@@ -405,7 +406,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             public TransitionDecoder Decoder { get; }
 
-            public NameJointMap Map { get; }
+            public NamePoseConverter Map { get; }
 
             public List<TransitionPlayer> Players { get; } = new List<TransitionPlayer>();
 

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -149,7 +150,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
                 _decoder = new MainThreadDecoder(model);
                 ModelContract c = model.Contract;
-                var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.JointCount, 5);
                 Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = true });
                 Player.TransitionCompleted += e => Completions.Add(e);

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.Linq;
@@ -216,7 +217,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double _jitter;
             private readonly TestRandom _random;
             private readonly SyntheticClip _clip;
-            private readonly NameJointMap _map;
+            private readonly NamePoseConverter _map;
             private readonly TransitionDecoder _decoder;
             private readonly Inbetweener _reference;
             private ArrayPoseStream _stream;
@@ -233,7 +234,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 // The character lists its bones in another order than the model: the map must reorder.
                 var names = new List<string>(c.Skeleton.Names);
                 names.Reverse();
-                _map = new NameJointMap(c.Skeleton, c.UnitScale, names);
+                _map = new NamePoseConverter(c.Skeleton, c.UnitScale, names);
                 _clip = new SyntheticClip(names.Count, seed);
                 Player = new TransitionPlayer(_map, _decoder, new PlaybackSettings { BlendInSeconds = BlendIn, BlendOutSeconds = BlendOut, LockFeet = false });
                 Player.TransitionCompleted += e => Completions.Add(e);

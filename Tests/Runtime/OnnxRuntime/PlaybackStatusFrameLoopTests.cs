@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.Threading;
@@ -205,7 +206,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _budget.Arm(runsBeforeFailure);
                 _decoder = decoding == Decoding.WorkerThread ? new InferenceWorker(inbetweener) : new MainThreadDecoder(inbetweener);
                 ModelContract c = inbetweener.Contract;
-                var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.Skeleton.JointCount, seed: 11);
                 Settings = new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2 };
                 Player = new TransitionPlayer(map, _decoder, Settings);

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -117,7 +118,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             for (int i = 0; i < 90; i++) loop.Step();
             long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
             Assert.That(loop.Completions.Count, Is.EqualTo(1), "the loop crossed the target frame");
-            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by 90 frames (RootMotion, TransitionPlayer, PoseBlend, SkeletonJointMap)");
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by 90 frames (RootMotion, TransitionPlayer, PoseBlend, SkeletonPoseConverter)");
         }
 
         private static Vector3D Horizontal(Vector3D v) => new Vector3D(v.X, 0, v.Z);
@@ -157,7 +158,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
                 _decoder = new MainThreadDecoder(model);
                 _humanoid = UnityHumanoid.Model(model.Contract.Skeleton, UnityHumanoid.Blender, seed: 21);
-                SkeletonJointMap map = _humanoid.Rig.CreateJointMap(model.Contract.Skeleton);
+                SkeletonPoseConverter map = _humanoid.Rig.CreatePoseConverter(model.Contract.Skeleton);
                 Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = slerpOnly });
                 Player.TransitionCompleted += e => Completions.Add(e);
                 _rootMotion = new RootMotion(map.Armature) { Enabled = applyRootMotion };

@@ -1,22 +1,24 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Tests.Rotations;
+using DeltaInterpolator.Tests.Playback;
 using NUnit.Framework;
 
-namespace DeltaInterpolator.Tests.Playback
+namespace DeltaInterpolator.Tests.Characters
 {
     [TestFixture]
-    public sealed class NameJointMapTests
+    public sealed class NamePoseConverterTests
     {
         private static readonly Skeleton s_model = new Skeleton(new[] { "Hips", "Spine", "Head" }, new[] { -1, 0, 1 }, new double[] { 0, 90, 0, 0, 10, 0, 0, 20, 0 });
 
         [Test]
         public void ConvertsWithHandednessAndUnitsAndReordersBones()
         {
-            var map = new NameJointMap(s_model, 0.01, new[] { "Head", "Hips", "Spine" });
+            var map = new NamePoseConverter(s_model, 0.01, new[] { "Head", "Hips", "Spine" });
             Assert.That(map.RootBone, Is.EqualTo(1));
             var random = new TestRandom(2);
             var boneRoot = new double[] { 0.3, 0.9, -1.2 };
@@ -40,9 +42,9 @@ namespace DeltaInterpolator.Tests.Playback
         [Test]
         public void NamesThatDoNotMatchAreListed()
         {
-            var e = Assert.Throws<ArgumentException>(() => new NameJointMap(s_model, 0.01, new[] { "Hips", "Chest", "Head" }));
+            var e = Assert.Throws<ArgumentException>(() => new NamePoseConverter(s_model, 0.01, new[] { "Hips", "Chest", "Head" }));
             Assert.That(e!.Message, Does.Contain("not in the model: Chest").And.Contain("missing: Spine"));
-            Assert.Throws<ArgumentException>(() => new NameJointMap(s_model, 0.01, new[] { "Hips", "Spine", "Head", "Hips" }));
+            Assert.Throws<ArgumentException>(() => new NamePoseConverter(s_model, 0.01, new[] { "Hips", "Spine", "Head", "Hips" }));
         }
     }
 }

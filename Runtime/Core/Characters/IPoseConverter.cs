@@ -1,6 +1,6 @@
 using System;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Characters
 {
     /// <summary>
     /// Converts poses between a character (its bones, in Unity's space: left-handed, Y up, metres) and the
@@ -8,11 +8,11 @@ namespace DeltaInterpolator.Core.Playback
     /// position (3 values) and one local rotation (w, x, y, z) per bone or joint, in flat arrays.
     /// </summary>
     /// <remarks>
-    /// <see cref="NameJointMap"/> matches bones to joints by name for characters that share the model's
+    /// <see cref="NamePoseConverter"/> matches bones to joints by name for characters that share the model's
     /// skeleton; a retargeting map (different rest poses and bone names) implements the same interface.
     /// Implementations must not allocate: the player calls them every frame.
     /// </remarks>
-    public interface IJointMap
+    public interface IPoseConverter
     {
         /// <summary>Number of character bones the map reads and drives.</summary>
         int BoneCount { get; }

@@ -4,14 +4,14 @@ using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Characters
 {
     /// <summary>
     /// A character's rig as Unity sees it: the bones the component drives (names, parents), each bone's
     /// local position and the local rotation of a reference pose, all in Unity's space (left-handed, Y up,
     /// quaternions (w, x, y, z)), and where the root bone's parent (the armature) sits in the character.
-    /// It becomes the <see cref="IJointMap"/> between the character and the model through Core's
-    /// <see cref="SkeletonMap"/> (<see cref="CreateJointMap"/>), which owns every conversion: handedness,
+    /// It becomes the <see cref="IPoseConverter"/> between the character and the model through Core's
+    /// <see cref="SkeletonMap"/> (<see cref="CreatePoseConverter"/>), which owns every conversion: handedness,
     /// units, bone frames, joints the rig lacks.
     /// </summary>
     /// <remarks>
@@ -23,7 +23,7 @@ namespace DeltaInterpolator.Core.Playback
     /// parent −1.</para>
     /// <para>Local positions are in the units of each bone's parent; the armature's scale turns them into
     /// the character's units (an FBX armature at scale 0.01 holds centimetres). The character's own scale
-    /// in the scene does not matter here: only root motion sees it (<see cref="RootMotion"/>).</para>
+    /// in the scene does not matter here: only root motion sees it (<see cref="Playback.RootMotion"/>).</para>
     /// </remarks>
     public sealed class CharacterRig
     {
@@ -131,13 +131,13 @@ namespace DeltaInterpolator.Core.Playback
         /// <param name="jointMap">Model joint → bone chains; null picks the built-in map that finds the most bones (<see cref="JointMap.Detect"/>).</param>
         /// <param name="maxBoneDeviationDegrees">The largest angle a mapped bone may point away from the model's T-pose.</param>
         /// <exception cref="JointMapException">A model joint has no bone, or the reference pose is not a T-pose (bones named).</exception>
-        public SkeletonJointMap CreateJointMap(Skeleton model, JointMap? jointMap = null, double maxBoneDeviationDegrees = DefaultMaxBoneDeviationDegrees)
+        public SkeletonPoseConverter CreatePoseConverter(Skeleton model, JointMap? jointMap = null, double maxBoneDeviationDegrees = DefaultMaxBoneDeviationDegrees)
         {
             if (model == null) throw new ArgumentNullException(nameof(model));
             ReferencePose declared = ReferencePose.ModelTPose(model);
             SkeletonMap map = SkeletonMap.Create(ReferencePose, declared, jointMap ?? JointMap.Detect(Skeleton, model), Name);
             BoneDirections.RequireTPose(map, declared, maxBoneDeviationDegrees, Name);
-            return new SkeletonJointMap(map, Armature);
+            return new SkeletonPoseConverter(map, Armature);
         }
 
         /// <summary>

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Playback;
@@ -5,20 +6,21 @@ using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Tests.Retargeting;
+using DeltaInterpolator.Tests.Playback;
 using NUnit.Framework;
 
-namespace DeltaInterpolator.Tests.Playback
+namespace DeltaInterpolator.Tests.Characters
 {
     /// <summary>
     /// A humanoid character (HumanBodyBones names, Unity space, metres) mapped to the model's skeleton with
     /// <see cref="JointMap.UnityHumanoid"/>: poses go to the model and come back unchanged.
     /// </summary>
     [TestFixture]
-    public sealed class SkeletonJointMapTests
+    public sealed class SkeletonPoseConverterTests
     {
         // The LaFAN1 skeleton as a Unity humanoid rig: HumanBodyBones names, metres, Unity's handedness,
         // with its T-pose as the reference.
-        private static SkeletonJointMap Humanoid(Skeleton model)
+        private static SkeletonPoseConverter Humanoid(Skeleton model)
         {
             int n = model.JointCount;
             var names = new List<string>();
@@ -34,7 +36,7 @@ namespace DeltaInterpolator.Tests.Playback
                 Handedness.RotationToUnity(QuaternionD.Read(tposeRotations, 4 * j)).Write(rotations, 4 * j);
             }
 
-            return SkeletonJointMap.FromUnity(names, model.Parents, positions, rotations, model, "humanoid");
+            return SkeletonPoseConverter.FromUnity(names, model.Parents, positions, rotations, model, "humanoid");
         }
 
         private static double[] Copy(IReadOnlyList<double> values)
@@ -48,7 +50,7 @@ namespace DeltaInterpolator.Tests.Playback
         public void AHumanoidPoseRoundTripsThroughTheModel()
         {
             Skeleton model = RetargetFixtures.Lafan1();
-            SkeletonJointMap map = Humanoid(model);
+            SkeletonPoseConverter map = Humanoid(model);
             Assert.That(map.BoneCount, Is.EqualTo(model.JointCount));
             Assert.That(map.JointCount, Is.EqualTo(model.JointCount));
             // Centimetres against metres, same proportions: the root scales by 100.
@@ -90,7 +92,7 @@ namespace DeltaInterpolator.Tests.Playback
             var names = new List<string>(model.Names); // LaFAN1 names are not HumanBodyBones names
             var rotations = new double[4 * n];
             for (int b = 0; b < n; b++) rotations[4 * b] = 1;
-            Assert.Throws<JointMapException>(() => SkeletonJointMap.FromUnity(names, model.Parents, Copy(model.Offsets), rotations, model, "rig"));
+            Assert.Throws<JointMapException>(() => SkeletonPoseConverter.FromUnity(names, model.Parents, Copy(model.Offsets), rotations, model, "rig"));
         }
     }
 }

@@ -4,16 +4,16 @@ using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Characters
 {
     /// <summary>
-    /// The simplest <see cref="IJointMap"/>: each character bone is the model joint of the same name, with
+    /// The simplest <see cref="IPoseConverter"/>: each character bone is the model joint of the same name, with
     /// the same rest pose. Only the space changes: <see cref="Handedness"/> (mirror X) and the unit scale
     /// (model data units × <see cref="UnitScale"/> = metres). Right for a character imported from
     /// the model's own skeleton (e.g. a LaFAN1 BVH or FBX); characters with other skeletons need a
     /// retargeting map.
     /// </summary>
-    public sealed class NameJointMap : IJointMap
+    public sealed class NamePoseConverter : IPoseConverter
     {
         private readonly int[] _boneOfJoint;
         private readonly double _unitScale;
@@ -23,7 +23,7 @@ namespace DeltaInterpolator.Core.Playback
         /// <param name="unitScale">Metres per model data unit (<c>ModelContract.UnitScale</c>; LaFAN1: 0.01).</param>
         /// <param name="boneNames">One name per driven bone; together exactly the model's joint names, in any order.</param>
         /// <exception cref="ArgumentException">A name is unknown, repeated or missing; the message lists them.</exception>
-        public NameJointMap(Skeleton model, double unitScale, IReadOnlyList<string> boneNames)
+        public NamePoseConverter(Skeleton model, double unitScale, IReadOnlyList<string> boneNames)
         {
             if (model == null) throw new ArgumentNullException(nameof(model));
             if (boneNames == null) throw new ArgumentNullException(nameof(boneNames));

@@ -4,10 +4,10 @@ using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Characters
 {
     /// <summary>
-    /// An <see cref="IJointMap"/> for characters whose skeleton is not the model's (e.g. a Unity humanoid
+    /// An <see cref="IPoseConverter"/> for characters whose skeleton is not the model's (e.g. a Unity humanoid
     /// rig): a <see cref="SkeletonMap"/> from the character's skeleton (its bone names, hierarchy, rest
     /// offsets and reference pose) to the model's, with a <see cref="JointMap"/> such as
     /// <see cref="JointMap.UnityHumanoid"/>. Bones pointing the same way in the world on both sides is
@@ -21,7 +21,7 @@ namespace DeltaInterpolator.Core.Playback
     /// FBX armature turned and scaled), the other bones' rotations local to theirs. Allocation-free after
     /// construction; one thread at a time.
     /// </remarks>
-    public sealed class SkeletonJointMap : IJointMap
+    public sealed class SkeletonPoseConverter : IPoseConverter
     {
         private readonly double[] _positions;
         private readonly double[] _readRotations;
@@ -29,7 +29,7 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _backRotations;
 
         /// <summary>Wraps <paramref name="map"/>, whose source is the character (model handedness) and target the model.</summary>
-        public SkeletonJointMap(SkeletonMap map)
+        public SkeletonPoseConverter(SkeletonMap map)
             : this(map, RootFrame.Identity)
         {
         }
@@ -38,7 +38,7 @@ namespace DeltaInterpolator.Core.Playback
         /// Wraps <paramref name="map"/>, whose source is the character in its own space (model handedness), with
         /// the root bone's parent placed in the character's space (Unity's) by <paramref name="armature"/>.
         /// </summary>
-        public SkeletonJointMap(SkeletonMap map, RootFrame armature)
+        public SkeletonPoseConverter(SkeletonMap map, RootFrame armature)
         {
             Map = map ?? throw new ArgumentNullException(nameof(map));
             Armature = armature;
@@ -78,7 +78,7 @@ namespace DeltaInterpolator.Core.Playback
         /// <param name="source">The character's name for messages.</param>
         /// <param name="jointMap">Model joint → character bone chains; null: <see cref="JointMap.UnityHumanoid"/>.</param>
         /// <exception cref="JointMapException">A model joint has no bone.</exception>
-        public static SkeletonJointMap FromUnity(IReadOnlyList<string> boneNames, IReadOnlyList<int> parents, IReadOnlyList<double> unityLocalPositions,
+        public static SkeletonPoseConverter FromUnity(IReadOnlyList<string> boneNames, IReadOnlyList<int> parents, IReadOnlyList<double> unityLocalPositions,
             IReadOnlyList<double> unityReferenceRotations, Skeleton model, string source, JointMap? jointMap = null)
         {
             if (boneNames == null) throw new ArgumentNullException(nameof(boneNames));
@@ -98,7 +98,7 @@ namespace DeltaInterpolator.Core.Playback
 
             var skeleton = new Skeleton(boneNames, parents, offsets);
             var reference = new ReferencePose(skeleton, rotations, Vector3D.Read(offsets, 0));
-            return new SkeletonJointMap(SkeletonMap.Create(reference, ReferencePose.ModelTPose(model), jointMap ?? JointMap.UnityHumanoid, source));
+            return new SkeletonPoseConverter(SkeletonMap.Create(reference, ReferencePose.ModelTPose(model), jointMap ?? JointMap.UnityHumanoid, source));
         }
 
         /// <inheritdoc />

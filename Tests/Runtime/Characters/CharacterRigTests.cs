@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -8,9 +9,10 @@ using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Tests.Retargeting;
+using DeltaInterpolator.Tests.Playback;
 using NUnit.Framework;
 
-namespace DeltaInterpolator.Tests.Playback
+namespace DeltaInterpolator.Tests.Characters
 {
     /// <summary>
     /// Rigs that are not the model's, described as the Unity layer sees them (<see cref="CharacterRig"/>):
@@ -44,7 +46,7 @@ namespace DeltaInterpolator.Tests.Playback
         {
             UnityHumanoid humanoid = Load(source);
             Skeleton model = RetargetFixtures.Lafan1();
-            SkeletonJointMap map = humanoid.Rig.CreateJointMap(model, JointMap.UnityHumanoid);
+            SkeletonPoseConverter map = humanoid.Rig.CreatePoseConverter(model, JointMap.UnityHumanoid);
             SkeletonMap retarget = map.Map;
             double[] deviation = BoneDirections.Deviations(retarget, ReferencePose.ModelTPose(model));
             for (int j = 0; j < deviation.Length; j++)
@@ -112,7 +114,7 @@ namespace DeltaInterpolator.Tests.Playback
         {
             UnityHumanoid humanoid = Load(source);
             CharacterRig turned = TurnBone(humanoid, "LeftLowerArm", 30.0 + Baseline(humanoid, "LeftForeArm"));
-            var error = Assert.Throws<JointMapException>(() => turned.CreateJointMap(RetargetFixtures.Lafan1(), JointMap.UnityHumanoid));
+            var error = Assert.Throws<JointMapException>(() => turned.CreatePoseConverter(RetargetFixtures.Lafan1(), JointMap.UnityHumanoid));
             TestContext.WriteLine(error!.Message);
             Assert.That(error.Message, Does.Contain("LeftLowerArm (LeftForeArm)"));
             Assert.That(error.Message, Does.Contain("25°"));
@@ -124,9 +126,9 @@ namespace DeltaInterpolator.Tests.Playback
         {
             Skeleton model = RetargetFixtures.Lafan1();
             UnityHumanoid humanoid = UnityHumanoid.Model(model, UnityHumanoid.Blender, seed: 3);
-            Assert.That(() => humanoid.Rig.CreateJointMap(model), Throws.Nothing);
-            Assert.That(() => TurnBone(humanoid, "RightUpperLeg", 24).CreateJointMap(model), Throws.Nothing);
-            var error = Assert.Throws<JointMapException>(() => TurnBone(humanoid, "RightUpperLeg", 26).CreateJointMap(model));
+            Assert.That(() => humanoid.Rig.CreatePoseConverter(model), Throws.Nothing);
+            Assert.That(() => TurnBone(humanoid, "RightUpperLeg", 24).CreatePoseConverter(model), Throws.Nothing);
+            var error = Assert.Throws<JointMapException>(() => TurnBone(humanoid, "RightUpperLeg", 26).CreatePoseConverter(model));
             Assert.That(error!.Message, Does.Contain("RightUpperLeg (RightUpLeg) 26°"));
         }
 
@@ -148,8 +150,8 @@ namespace DeltaInterpolator.Tests.Playback
             }
 
             var rig = new CharacterRig("lafan1 rig", model.Names, model.Parents, positions, bind, RootFrame.Identity);
-            SkeletonJointMap map = rig.WithModelTPoseByAxes().CreateJointMap(model, JointMap.Lafan1);
-            var byName = new NameJointMap(model, 0.01, model.Names);
+            SkeletonPoseConverter map = rig.WithModelTPoseByAxes().CreatePoseConverter(model, JointMap.Lafan1);
+            var byName = new NamePoseConverter(model, 0.01, model.Names);
             var root = new[] { 0.2, 0.95, -0.4 };
             var rotations = new double[4 * n];
             for (int j = 0; j < n; j++) random.Rotation().Write(rotations, 4 * j);
@@ -169,7 +171,7 @@ namespace DeltaInterpolator.Tests.Playback
             var names = new List<string>(rig.BoneNames);
             names[names.IndexOf("LeftLowerLeg")] = "LeftKnee";
             var renamed = new CharacterRig("rig", names, rig.Parents, rig.LocalPositions, rig.ReferenceRotations, rig.Armature);
-            var error = Assert.Throws<JointMapException>(() => renamed.CreateJointMap(model, JointMap.UnityHumanoid));
+            var error = Assert.Throws<JointMapException>(() => renamed.CreatePoseConverter(model, JointMap.UnityHumanoid));
             Assert.That(error!.MissingJoints, Is.EqualTo(new[] { "LeftLeg" }));
             Assert.That(error.Message, Does.Contain("LeftLowerLeg"));
         }
@@ -201,7 +203,7 @@ namespace DeltaInterpolator.Tests.Playback
         private static double Baseline(UnityHumanoid humanoid, string modelJoint)
         {
             Skeleton model = RetargetFixtures.Lafan1();
-            SkeletonMap map = humanoid.Rig.CreateJointMap(model, JointMap.UnityHumanoid, 90).Map;
+            SkeletonMap map = humanoid.Rig.CreatePoseConverter(model, JointMap.UnityHumanoid, 90).Map;
             return BoneDirections.Deviations(map, ReferencePose.ModelTPose(model))[model.IndexOf(modelJoint)] * 180 / Math.PI;
         }
 

@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Retargeting;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Characters
 {
     /// <summary>
     /// Which of a character's transforms the component drives: the bones that play a part (a

@@ -1,7 +1,7 @@
 using System;
 using DeltaInterpolator.Core.Rotations;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Characters
 {
     /// <summary>
     /// Where a frame of reference sits in its parent's space: a position, a rotation (w, x, y, z) and a

@@ -1,9 +1,11 @@
+using DeltaInterpolator.Core.Characters;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Tests.Playback;
 using NUnit.Framework;
 
-namespace DeltaInterpolator.Tests.Playback
+namespace DeltaInterpolator.Tests.Characters
 {
     /// <summary>Which transforms a character's component drives: the mapped bones, the bones between them, nothing else.</summary>
     [TestFixture]
