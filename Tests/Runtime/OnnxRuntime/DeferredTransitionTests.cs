@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
@@ -142,13 +143,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private sealed class Character : IDisposable
         {
             private readonly SyntheticClip _clip;
-            private readonly TransitionDecoder _decoder;
+            private readonly TransitionScheduler _decoder;
             private ArrayPoseStream _stream;
 
             public Character()
             {
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = new MainThreadDecoder(model);
+                _decoder = new MainThreadScheduler(model);
                 ModelContract c = model.Contract;
                 var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.JointCount, 5);
@@ -169,6 +170,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 Time += 1.0 / Fps;
                 _clip.Sample(Time, _stream.Root, _stream.Rotations);
+                _decoder.Pump();
                 Player.Step(Time, ref _stream);
             }
 

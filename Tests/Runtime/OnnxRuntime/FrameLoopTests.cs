@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
@@ -218,7 +219,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly TestRandom _random;
             private readonly SyntheticClip _clip;
             private readonly NamePoseConverter _map;
-            private readonly TransitionDecoder _decoder;
+            private readonly TransitionScheduler _decoder;
             private readonly Inbetweener _reference;
             private ArrayPoseStream _stream;
 
@@ -228,7 +229,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _jitter = jitter;
                 _random = new TestRandom(seed);
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = decoding == Decoding.WorkerThread ? new InferenceWorker(model) : new MainThreadDecoder(model);
+                _decoder = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(model) : new MainThreadScheduler(model);
                 _reference = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel);
                 ModelContract c = model.Contract;
                 // The character lists its bones in another order than the model: the map must reorder.
@@ -264,6 +265,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 NextStep = Draw();
                 // The controller's output this frame, then the player's layer on top of it.
                 _clip.Sample(Time, _stream.Root, _stream.Rotations);
+                _decoder.Pump();
                 Player.Step(Time, ref _stream);
                 Array.Copy(_stream.Root, Shown.Root, 3);
                 Array.Copy(_stream.Rotations, Shown.Rotations, _stream.Rotations.Length);

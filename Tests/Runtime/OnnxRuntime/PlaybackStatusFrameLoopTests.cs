@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
@@ -190,7 +191,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             public const string EngineMessage = "simulated GPU worker failure";
             private readonly SyntheticClip _clip;
-            private readonly TransitionDecoder _decoder;
+            private readonly TransitionScheduler _decoder;
             private readonly RunBudget _budget;
             private ArrayPoseStream _stream;
 
@@ -204,7 +205,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     new FailingBackend(OnnxRuntimeBackend.Load(whole.Replace(".onnx", ".frame.onnx")), _budget));
                 // Loading probes each graph once; the budget counts the runs of play only.
                 _budget.Arm(runsBeforeFailure);
-                _decoder = decoding == Decoding.WorkerThread ? new InferenceWorker(inbetweener) : new MainThreadDecoder(inbetweener);
+                _decoder = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(inbetweener) : new MainThreadScheduler(inbetweener);
                 ModelContract c = inbetweener.Contract;
                 var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.Skeleton.JointCount, seed: 11);
@@ -257,6 +258,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 if (!Clock.Advance(callback, deltaTime, unscaledDeltaTime, 0.02)) return;
                 double time = Clock.Time;
                 _clip.Sample(time, _stream.Root, _stream.Rotations);
+                _decoder.Pump();
                 if (Status.TryBeginFrame(Player, time, ModelName, EngineName))
                 {
                     PlayedFrames++;

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
@@ -131,6 +132,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double[] _modelRoot = new double[3];
             private readonly double[] _modelRotations;
             private readonly NamePoseConverter _map;
+            private readonly MainThreadScheduler _scheduler;
             private ArrayPoseStream _stream;
             private int _frame;
 
@@ -146,7 +148,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _localPositions = new double[3 * j];
                 _modelRotations = new double[4 * j];
                 _map = new NamePoseConverter(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
-                Player = new TransitionPlayer(_map, new MainThreadDecoder(model), new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
+                _scheduler = new MainThreadScheduler(model);
+                Player = new TransitionPlayer(_map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
                 _stream = new ArrayPoseStream(new double[3], new double[4 * j]);
                 _frame = -1;
             }
@@ -164,6 +167,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 _frame++;
                 Sample(Time, _stream.Root, _stream.Rotations);
+                _scheduler.Pump();
                 Player.Step(Time, ref _stream);
             }
 

@@ -2,7 +2,7 @@ using System;
 using System.Threading;
 using DeltaInterpolator.Core.Inference;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Scheduling
 {
     /// <summary>
     /// Runs the network on the calling (main) thread for engines whose workers must stay there (Unity
@@ -10,24 +10,23 @@ namespace DeltaInterpolator.Core.Playback
     /// pending work of every player into batched runs bounded by <see cref="TokensPerFrame"/>, and with a
     /// backend whose bindings are asynchronous (<see cref="IAsyncInferenceBinding"/>) it schedules them and
     /// collects the results in a later frame. A frame whose network output is not there yet shows the
-    /// request's SLERP pose (<see cref="TransitionPlayer"/>).
+    /// request's SLERP pose (<see cref="Playback.TransitionPlayer"/>).
     /// </summary>
-    public sealed class MainThreadDecoder : TransitionDecoder
+    public sealed class MainThreadScheduler : TransitionScheduler
     {
-        private readonly BatchScheduler _scheduler;
-        private double _lastPump = double.NaN;
+        private readonly BatchPump _pump;
         private int _tokensPerFrame = 512;
-        private int _framesPerJob = 1;
+        private int _framesPerRequest = 1;
 
         /// <summary>Creates the decoder; it owns <paramref name="inbetweener"/>.</summary>
         /// <param name="inbetweener">The model.</param>
         /// <param name="maxBatch">Most transitions per run (1: one run per request and frame, unbatched).</param>
         /// <param name="framesPerRun">Missing frames each transition decodes per run (default 4: a run whose results arrive a few
         /// frames later, on an asynchronous engine, still keeps ahead of playback).</param>
-        public MainThreadDecoder(Inbetweener inbetweener, int maxBatch = 256, int framesPerRun = 4)
+        public MainThreadScheduler(Inbetweener inbetweener, int maxBatch = 256, int framesPerRun = 4)
             : base(inbetweener)
         {
-            _scheduler = new BatchScheduler(inbetweener, maxBatch, useAsync: true, framesPerRun: framesPerRun);
+            _pump = new BatchPump(inbetweener, maxBatch, useAsync: true, framesPerRun: framesPerRun);
         }
 
         /// <summary>
@@ -42,59 +41,57 @@ namespace DeltaInterpolator.Core.Playback
         }
 
         /// <summary>Frame runs per playing transition and rendered frame, at most (default 1; each decodes the constructor's frames per run).</summary>
-        public int FramesPerJob
+        public int FramesPerRequest
         {
-            get => _framesPerJob;
-            set => _framesPerJob = value >= 1 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "expected at least 1");
+            get => _framesPerRequest;
+            set => _framesPerRequest = value >= 1 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "expected at least 1");
         }
 
         /// <summary>Tokens the last <see cref="Pump"/> scheduled.</summary>
         public int LastFrameTokens { get; private set; }
 
-        internal BatchScheduler Scheduler => _scheduler;
+        internal BatchPump Batches => _pump;
+
+        /// <inheritdoc />
+        public override IScheduleTimer? Timer
+        {
+            get => _pump.Timer;
+            set => _pump.Timer = value;
+        }
 
         /// <inheritdoc />
         public override void Dispose()
         {
-            _scheduler.Dispose();
+            _pump.Dispose();
             Inbetweener.Dispose();
         }
 
         /// <summary>
         /// One frame's work for every player: collects finished runs and schedules new ones within
-        /// <see cref="TokensPerFrame"/>. Players call it at their first <see cref="TransitionPlayer.BeginFrame"/>
-        /// of each frame time; call it yourself to run the work at another point of the frame.
+        /// <see cref="TokensPerFrame"/>. The owner of the frame calls it once per rendered frame (see <see cref="TransitionScheduler.Pump"/>).
         /// </summary>
-        public void Pump()
+        public override void Pump()
         {
-            LastFrameTokens = _scheduler.Pump(_tokensPerFrame, _framesPerJob);
+            LastFrameTokens = _pump.Pump(_tokensPerFrame, _framesPerRequest);
         }
 
-        internal override void Start(TransitionJob job)
+        internal override void Start(TransitionRequest request)
         {
-            job.Reset();
-            _scheduler.Add(job);
+            request.Reset();
+            _pump.Add(request);
         }
 
-        internal override void Need(TransitionJob job, int frames, double time)
-        {
-            job.Needed = frames;
-            if (time.Equals(_lastPump)) return;
-            _lastPump = time;
-            Pump();
-        }
-
-        internal override bool Drain(TransitionJob job, int millisecondsTimeout)
+        internal override bool Drain(TransitionRequest request, int millisecondsTimeout)
         {
             int start = Environment.TickCount;
             var spin = new SpinWait();
-            while (job.Decoded < job.Transition.MissingFrames && job.Error == null && !job.Finished)
+            while (request.Decoded < request.Transition.MissingFrames && request.Error == null && !request.Finished)
             {
                 if (unchecked(Environment.TickCount - start) > millisecondsTimeout) return false;
-                if (_scheduler.Pump(int.MaxValue, job.Transition.MissingFrames) == 0) spin.SpinOnce();
+                if (_pump.Pump(int.MaxValue, request.Transition.MissingFrames) == 0) spin.SpinOnce();
             }
 
-            return job.Decoded >= job.Transition.MissingFrames;
+            return request.Decoded >= request.Transition.MissingFrames;
         }
     }
 }

@@ -2,37 +2,33 @@ using System;
 using System.Threading;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
-using DeltaInterpolator.Core.Rotations;
 
-namespace DeltaInterpolator.Core.Playback
+namespace DeltaInterpolator.Core.Scheduling
 {
     /// <summary>
     /// One request's network work: its keys and missing frames (a <see cref="Transition"/>), the SLERP
     /// pose of every missing frame (written on the main thread at the request, shown until the network's
     /// frame arrives), the localized keys and their features, and how many frames are decoded so far. The
-    /// main thread writes the keys before handing the job to a <see cref="TransitionDecoder"/> and reads
+    /// main thread writes the keys before handing the request to a <see cref="TransitionScheduler"/> and reads
     /// frames below <see cref="Decoded"/>; a worker thread writes frame k before publishing Decoded = k + 1
     /// (release/acquire through <see cref="Volatile"/>).
     /// </summary>
-    internal sealed class TransitionJob
+    internal sealed class TransitionRequest
     {
         private int _decoded;
         private int _finished = 1;
         private int _cancelled;
         private int _needed;
 
-        public TransitionJob(Transition transition, int keyFeatureSize)
+        public TransitionRequest(Transition transition, ModelContract contract)
         {
             Transition = transition;
             int n = transition.MissingFrames;
             int j = transition.Skeleton.JointCount;
-            int k = transition.KeyFrameCount;
             SlerpRoots = new double[n * 3];
             SlerpRotations = new double[n * j * 4];
-            LocalRoot = new double[k * 3];
-            LocalRotations = new double[k * j * 4];
-            Pairs = new SlerpPair[j];
-            KeyFeatures = new float[k * keyFeatureSize];
+            Keys = new LocalizedKeys(contract, transition.PastFrames);
+            KeyFeatures = new float[transition.KeyFrameCount * contract.KeyFeatureSize];
         }
 
         public Transition Transition { get; }
@@ -43,17 +39,8 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>See <see cref="SlerpRoots"/>.</summary>
         public double[] SlerpRotations { get; }
 
-        /// <summary>The keys, localized (K × 3, model units).</summary>
-        public double[] LocalRoot { get; }
-
-        /// <summary>The keys' local rotations, localized (K × J × 4).</summary>
-        public double[] LocalRotations { get; }
-
-        /// <summary>Each joint's slerp between the last past key and the target (localized).</summary>
-        public SlerpPair[] Pairs { get; }
-
-        /// <summary>The request's localization (yaw and origin).</summary>
-        public Localization Localization { get; set; }
+        /// <summary>The keys, localized: what every missing frame is decoded against.</summary>
+        public LocalizedKeys Keys { get; }
 
         /// <summary>The request's <c>key_features</c> row (K × 9J), built on the main thread at the request.</summary>
         public float[] KeyFeatures { get; }
@@ -64,7 +51,7 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>Order of the request among all of its decoder's (older first).</summary>
         public long Sequence { get; set; }
 
-        /// <summary>Bumped at every <see cref="Reset"/>: tells a batch row filled for an earlier request of this job from this one.</summary>
+        /// <summary>Bumped at every <see cref="Reset"/>: tells a batch row filled for an earlier request of this request from this one.</summary>
         public int Generation { get; private set; }
 
         /// <summary>Scheduler state (one thread): keys encoded.</summary>
@@ -83,17 +70,14 @@ namespace DeltaInterpolator.Core.Playback
             set => Volatile.Write(ref _needed, value);
         }
 
-        /// <summary>True when no decoder touches the job any more (it may be reused).</summary>
+        /// <summary>True when no decoder touches the request any more (it may be reused).</summary>
         public bool Finished => Volatile.Read(ref _finished) != 0;
 
         /// <summary>True when the player no longer wants the frames.</summary>
         public bool Cancelled => Volatile.Read(ref _cancelled) != 0;
 
-        /// <summary>Set when the decoder failed; the player reports it on the main thread.</summary>
+        /// <summary>Set when the scheduler failed; the player reports it on the main thread.</summary>
         public Exception? Error { get; set; }
-
-        /// <summary>The main-thread decoder's lazy decoder for this job's shape (its own, not shared).</summary>
-        public LazyDecoder? Lazy { get; set; }
 
         public void Reset()
         {

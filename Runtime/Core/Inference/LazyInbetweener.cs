@@ -1,6 +1,5 @@
 using System;
 using DeltaInterpolator.Core.Inbetweening;
-using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Inference
 {
@@ -13,29 +12,25 @@ namespace DeltaInterpolator.Core.Inference
     /// </summary>
     /// <remarks>Created by <see cref="Inbetweener.CreateLazy"/>; reusable for any number of transitions of
     /// its shape; allocation-free after creation; not thread-safe.</remarks>
-    public sealed class LazyDecoder
+    public sealed class LazyInbetweener
     {
         private readonly Inbetweener _owner;
-        private readonly double[] _localRoot;
-        private readonly double[] _localRotations;
-        private readonly SlerpPair[] _pairs;
+        private readonly LocalizedKeys _localized;
+        private readonly RowDecoder _rows;
         private readonly GraphTensors _keys;
         private readonly GraphTensors _frame;
         private readonly IInferenceBinding _keysBinding;
         private readonly IInferenceBinding _frameBinding;
         private Transition? _transition;
-        private Localization _localization;
 
-        internal LazyDecoder(Inbetweener owner, IInferenceBackend keys, IInferenceBackend frame, int pastFrames, int missingFrames)
+        internal LazyInbetweener(Inbetweener owner, IInferenceBackend keys, IInferenceBackend frame, int pastFrames, int missingFrames)
         {
             _owner = owner;
             ModelContract c = owner.Contract;
-            int k = pastFrames + 1;
             PastFrames = pastFrames;
             MissingFrames = missingFrames;
-            _localRoot = new double[k * 3];
-            _localRotations = new double[k * c.JointCount * 4];
-            _pairs = new SlerpPair[c.JointCount];
+            _localized = new LocalizedKeys(c, pastFrames);
+            _rows = new RowDecoder(c);
             _keys = GraphTensors.Create(c, ModelGraphKind.Keys, pastFrames, missingFrames, 0);
             _frame = GraphTensors.ForFrame(c, _keys, 1);
             KeyMemory = _keys.KeyMemory!;
@@ -75,7 +70,7 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             _owner.CheckSkeleton(transition.Skeleton);
-            _localization = _owner.LocalizeAndBuild(transition, _localRoot, _localRotations, _pairs, _keys.KeyFeatures!);
+            _rows.Localize(transition, _localized, _keys.KeyFeatures!.Floats);
             _keysBinding.Run();
             _transition = transition;
         }
@@ -91,7 +86,7 @@ namespace DeltaInterpolator.Core.Inference
             if ((uint)k >= (uint)MissingFrames) throw new ArgumentOutOfRangeException(nameof(k), $"missing frame {k}; expected 0..{MissingFrames - 1}");
             _frame.SetQuery(k);
             _frameBinding.Run();
-            _owner.Decode(t, _localization, _localRoot, _pairs, _frame.RootPositionDelta!.Floats!, _frame.Rotation6DDelta!.Floats!, 0, k);
+            _rows.Decode(t, _localized, OutputRow.Of(_frame, 0, _owner.Contract.JointCount), k, t.RootPositions, t.LocalRotations);
         }
 
         internal void DisposeBindings()

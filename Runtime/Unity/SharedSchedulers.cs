@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Playback;
@@ -6,15 +7,15 @@ namespace DeltaInterpolator.Unity
 {
     /// <summary>
     /// One loaded model per (model asset, engine) for every character using it: characters share a
-    /// <see cref="TransitionDecoder"/> and the last one to leave disposes it.
+    /// <see cref="TransitionScheduler"/> and the last one to leave disposes it.
     /// </summary>
-    internal static class SharedDecoders
+    internal static class SharedSchedulers
     {
         private static readonly Dictionary<(InbetweeningModel, string), Entry> s_entries = new Dictionary<(InbetweeningModel, string), Entry>();
         private static readonly List<Entry> s_discarded = new List<Entry>();
 
         /// <exception cref="ModelContractException">The model does not load or fit the contract.</exception>
-        public static TransitionDecoder Acquire(InbetweeningModel model, IInferenceBackendFactory factory)
+        public static TransitionScheduler Acquire(InbetweeningModel model, IInferenceBackendFactory factory)
         {
             var key = (model, factory.Name);
             if (!s_entries.TryGetValue(key, out Entry? entry))
@@ -27,7 +28,7 @@ namespace DeltaInterpolator.Unity
             return entry.Decoder;
         }
 
-        public static void Release(TransitionDecoder decoder)
+        public static void Release(TransitionScheduler decoder)
         {
             foreach (KeyValuePair<(InbetweeningModel, string), Entry> e in s_entries)
             {
@@ -35,6 +36,7 @@ namespace DeltaInterpolator.Unity
                 if (--e.Value.Users == 0)
                 {
                     s_entries.Remove(e.Key);
+                    SchedulerPump.Remove(decoder);
                     decoder.Dispose();
                 }
 
@@ -48,6 +50,7 @@ namespace DeltaInterpolator.Unity
                 if (--entry.Users == 0)
                 {
                     s_discarded.RemoveAt(i);
+                    SchedulerPump.Remove(decoder);
                     decoder.Dispose();
                 }
 
@@ -59,7 +62,7 @@ namespace DeltaInterpolator.Unity
         /// The decoder's engine failed: the next <see cref="Acquire"/> of its model loads a fresh one, while the
         /// characters still holding this one release it as usual (the last disposes it).
         /// </summary>
-        public static void Discard(TransitionDecoder decoder)
+        public static void Discard(TransitionScheduler decoder)
         {
             foreach (KeyValuePair<(InbetweeningModel, string), Entry> e in s_entries)
             {
@@ -70,20 +73,23 @@ namespace DeltaInterpolator.Unity
             }
         }
 
-        private static TransitionDecoder Load(InbetweeningModel model, IInferenceBackendFactory factory)
+        private static TransitionScheduler Load(InbetweeningModel model, IInferenceBackendFactory factory)
         {
             Inbetweener inbetweener = ModelAssetGraphs.Load(model, factory);
-            return factory.RunsOffMainThread ? new InferenceWorker(inbetweener) : (TransitionDecoder)new MainThreadDecoder(inbetweener);
+            TransitionScheduler scheduler = factory.RunsOffMainThread ? new WorkerThreadScheduler(inbetweener) : (TransitionScheduler)new MainThreadScheduler(inbetweener);
+            scheduler.Timer = ProfilerScheduleTimer.Instance;
+            SchedulerPump.Add(scheduler);
+            return scheduler;
         }
 
         private sealed class Entry
         {
-            public Entry(TransitionDecoder decoder)
+            public Entry(TransitionScheduler decoder)
             {
                 Decoder = decoder;
             }
 
-            public TransitionDecoder Decoder { get; }
+            public TransitionScheduler Decoder { get; }
 
             public int Users { get; set; }
         }
