@@ -65,8 +65,9 @@ def _is_lafan1_folder(args) -> bool:
 
 
 def _run_prepare(args) -> int:
-    # Before any data is read: the output (existing without --force, or one of the named inputs) ...
-    safe_output.check(args.out, args.force, [args.stats] + [d for d in args.data if Path(d).is_file()])
+    # Before any data is read: the output (existing without --force, or one of the named inputs: --force
+    # replaces an output, never an input such as a folder's own manifest) ...
+    safe_output.check(args.out, args.force, _named_inputs(args))
     # ... then statistics the user named (the LaFAN1 default is read only by the LaFAN1 path below).
     if args.stats and args.stats != DEFAULT_STATS:
         from .benchmark import load_statistics
@@ -91,9 +92,11 @@ def _run_prepare(args) -> int:
         raise ValueError(f"--jobs {args.jobs}; expected 1 to 64")
     options = {"from_frame": args.from_frame, "reference_frame": args.reference_frame, "fps": args.input_fps,
                "map": args.map}
-    inputs = [d for d in args.data if Path(d).is_file()] + ([args.map] if args.map else [])
-    for source in [open_source(d) for d in args.data]:  # the output must not be one of the BVH inputs
-        inputs += [str(p.path) for p in plan_files(source, options, args.holdout, [])]
+    inputs = _named_inputs(args)
+    for source in [open_source(d) for d in args.data]:  # nor one of the BVH files, manifests or maps they name
+        plans = plan_files(source, options, args.holdout, [])
+        inputs += [str(p.path) for p in plans] + [str(p.map) for p in plans if p.map is not None]
+        inputs += [str(source.manifest)] if source.manifest is not None else []
     safe_output.check(args.out, args.force, inputs)
     pack, plans, sources = prepare_any(args.data, args.out, args.holdout, options, scales, args.cache,
                                        args.model, args.jobs)
@@ -294,6 +297,17 @@ def _run_quantize(args) -> int:
         print(f"  {kind:<5} {path}  {_size(before)} → {_size(after)}  {len(g.quantized)} MatMuls int8, "
               f"{len(g.kept)} float; max |int8 − float| / max |float| = {report.relative_difference[kind]:.2%}")
     return 0
+
+
+def _named_inputs(args) -> List[str]:
+    """What `prepare` reads that the command line names: --stats, --map, --model, every --data manifest and
+    each --data folder's own manifest (read even when absent now: a path it may be created at is still
+    refused). The BVH files and manifest maps are added once the sources are opened."""
+    from .datasets import MANIFEST_NAME
+    named = [args.stats, args.map, args.model]
+    for d in args.data:
+        named.append(str(Path(d) / MANIFEST_NAME) if Path(d).is_dir() else d)
+    return [str(x) for x in named if x]
 
 
 def _bvh_files(folder) -> List[str]:
