@@ -196,10 +196,51 @@ OPS: Dict[str, Callable] = {
 }
 
 
-def run_graph(graph, feeds: Dict[str, Array]) -> Dict[str, Array]:
-    """Evaluate an onnx.GraphProto on numpy inputs; returns every graph output by name."""
+# The int8 operators `quantize` writes (ONNX Runtime only); with operators.ALLOWED, what the model contract admits.
+QUANTIZED = {"DynamicQuantizeLinear", "MatMulInteger", "com.microsoft::DynamicQuantizeMatMul"}
+
+
+class UnsupportedOperatorError(ValueError):
+    """A graph holds a node this evaluator must not or cannot run; the message is `FILE: what; expected`."""
+
+
+def _operator(node) -> str:
+    return node.op_type if node.domain in ("", "ai.onnx") else f"{node.domain}::{node.op_type}"
+
+
+def check_runnable(graph, source: str = "model") -> None:
+    """Refuses, before any node runs, a graph with a node outside the model contract (operators.ALLOWED and the
+    int8 operators of `quantize`) or one this evaluator lacks: a `Loop` of 10^12 trips, an `If`, a subgraph or a
+    custom domain never runs, and a missing operator is one line instead of a NotImplementedError traceback."""
+    from .operators import ALLOWED
+    import onnx
+    for node in graph.node:
+        operator = _operator(node)
+        shown = f"node {node.name[:80]!r} ({operator[:80]})" if node.name else f"a {operator[:80]} node"
+        if operator not in ALLOWED and operator not in QUANTIZED:
+            raise UnsupportedOperatorError(
+                f"{source}: {shown} is outside the model contract's operators; expected only those both Unity "
+                "Sentis and Barracuda import (deltainterp/operators.py; no Loop, If or custom domain), as `export` "
+                "writes them")
+        if any(a.type in (onnx.AttributeProto.GRAPH, onnx.AttributeProto.GRAPHS) for a in node.attribute):
+            raise UnsupportedOperatorError(f"{source}: {shown} holds a subgraph; expected a graph without control "
+                                           "flow, as `export` writes it")
+        if operator not in RUNNABLE:
+            raise UnsupportedOperatorError(
+                f"{source}: {shown} is an operator the trainer's reference evaluator (deltainterp/onnx_reference.py) "
+                "lacks; expected a graph of the operators `export` and `quantize` write")
+
+
+# What run_graph can evaluate, spelled as _operator spells it (the contrib operator only in its own domain).
+RUNNABLE = {op for op in OPS if op != "DynamicQuantizeMatMul"} | {"com.microsoft::DynamicQuantizeMatMul"}
+
+
+def run_graph(graph, feeds: Dict[str, Array], source: str = "model") -> Dict[str, Array]:
+    """Evaluate an onnx.GraphProto on numpy inputs; returns every graph output by name. Every node is checked
+    before the first runs (check_runnable)."""
     import onnx
     import onnx.numpy_helper
+    check_runnable(graph, source)
     values: Dict[str, Array] = {init.name: onnx.numpy_helper.to_array(init) for init in graph.initializer}
     for inp in graph.input:
         if inp.name in values:
@@ -224,6 +265,8 @@ def run_model(model, feeds: Dict[str, Array]) -> Dict[str, Array]:
     """`model`: an onnx.ModelProto or a path."""
     import onnx
     import onnx.numpy_helper
+    source = "model"
     if not hasattr(model, "graph"):
-        model = onnx.load(str(model))
-    return run_graph(model.graph, feeds)
+        from .safe_input import load_onnx
+        source, model = str(model), load_onnx(model, "an ONNX graph")
+    return run_graph(model.graph, feeds, source)
