@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 from pathlib import Path
 from typing import List, Optional
@@ -310,6 +311,79 @@ def _named_inputs(args) -> List[str]:
     return [str(x) for x in named if x]
 
 
+def processors() -> int:
+    """The processors this process may run on (its affinity), as `speed`/`benchmark` cap --threads."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)
+
+
+def _refuse_option(name: str, value, expected: str) -> None:
+    raise ValueError(f"{name} {value}; expected {expected}")
+
+
+def _check_whole(name: str, value: Optional[int], low: int, high: int, what: str) -> None:
+    if value is not None and not low <= value <= high:
+        _refuse_option(name, value, f"{what} from {low} to {high}")
+
+
+def _check_real(name: str, value: Optional[float], low: float, high: float, what: str, open_low: bool = False) -> None:
+    if value is None:
+        return
+    if not (math.isfinite(value) and (value > low if open_low else value >= low) and value <= high):
+        _refuse_option(name, value, f"{what} {'above' if open_low else 'from'} {low:g}" +
+                       (f" to {high:g}" if math.isfinite(high) else ""))
+
+
+def check_threads(value: int) -> None:
+    """--threads from 1 to the processors: more only compete for the same cores (500 took 19 s to start, 2^31
+    ended in std::bad_alloc blamed on the model)."""
+    _check_whole("--threads", value, 1, processors(), "a thread count (at most the processors of this machine)")
+
+
+def check_train_options(args) -> None:
+    """Every `train` number refused in one line (`--OPTION VALUE; expected ...`) before anything is read; a zero
+    batch, block or head count, or a checkpoint every 0 steps, ended in tracebacks of 12 to 42 lines."""
+    check_threads(args.threads)
+    _check_whole("--batch-size", args.batch_size, 1, 1 << 16, "windows per step")
+    _check_whole("--steps", args.steps, 1, 1 << 40, "optimizer steps")
+    _check_whole("--checkpoint-every", args.checkpoint_every, 1, 1 << 40, "steps between checkpoints")
+    _check_whole("--validate-every", args.validate_every, 1, 1 << 40, "steps between validations")
+    _check_whole("--warmup", args.warmup, 0, 1 << 40, "warm-up steps")
+    _check_whole("--average-from", args.average_from, 0, 1 << 40, "a step (0: no averaging)")
+    _check_whole("--seed", args.seed, 0, (1 << 32) - 1, "a seed")
+    _check_whole("--width", args.width, 2, 1 << 14, "a network width")
+    _check_whole("--blocks", args.blocks, 1, 64, "a number of blocks")
+    _check_whole("--heads", args.heads, 1, 1 << 10, "a number of attention heads")
+    _check_whole("--min-past", args.min_past, 1, 10, "past keys")
+    _check_whole("--min-gap", args.min_gap, 1, 1 << 16, "missing frames")
+    _check_whole("--max-gap", args.max_gap, args.min_gap if args.min_gap >= 1 else 1, 1 << 16,
+                 "missing frames (at least --min-gap)")
+    _check_real("--lr", args.lr, 0.0, 1.0, "a learning rate", open_low=True)
+    _check_real("--decay-at", args.decay_at, 0.0, math.inf, "a fraction of --steps", open_low=True)
+    _check_real("--dropout", args.dropout, 0.0, 0.99, "a dropout probability")
+    _check_real("--reconstruction-scale", args.reconstruction_scale, 0.0, math.inf, "a weight")
+    _check_real("--foot-contact-weight", args.foot_contact_weight, 0.0, math.inf, "a weight (0: off)")
+    _check_real("--longest-past-share", args.longest_past_share, 0.0, 1.0, "a share", open_low=True)
+    _check_real("--chained-share", args.chained_share, 0.0, 1.0, "a share")
+    _check_real("--max-minutes", args.max_minutes, 0.0, math.inf, "minutes (0: no limit)")
+    if args.width is not None or args.heads is not None:
+        from .model import preset
+        sizes = {**preset(args.preset, joints=1).to_dict(), **{k: getattr(args, k) for k in ("width", "heads")
+                                                                 if getattr(args, k) is not None}}
+        if sizes["width"] % sizes["heads"]:
+            _refuse_option("--width", sizes["width"], f"a multiple of the {sizes['heads']} heads")
+
+
+def check_evaluate_options(args) -> None:
+    """`evaluate`'s numbers, as `train`'s."""
+    check_threads(args.threads)
+    _check_whole("--batch-size", args.batch_size, 1, 1 << 16, "windows per network call")
+    _check_whole("--window", args.window, 2, 1 << 20, "frames")
+    _check_whole("--offset", args.offset, 1, 1 << 20, "frames between windows")
+
+
 def _bvh_files(folder) -> List[str]:
     """The *.bvh files of a --data folder (none for anything else): inputs no output may replace."""
     return [str(p) for p in Path(folder).glob("*.bvh")] if folder and Path(folder).is_dir() else []
@@ -334,6 +408,7 @@ def _run_evaluate_export_fixtures(args) -> int:
     if args.verb == "evaluate":
         from .benchmark import format_table, run_benchmark
         from .checkpoint import load_checkpoint
+        check_evaluate_options(args)
         torch.set_num_threads(args.threads)
         inputs = [args.checkpoint, args.stats, *_bvh_files(args.data)]  # an output never replaces a --data BVH
         safe_output.check(args.json, args.force, inputs)  # before the benchmark runs, not after
@@ -425,6 +500,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         if args.verb == "prepare":
             return _run_prepare(args)
         if args.verb == "train":
+            check_train_options(args)
             from .train import TrainConfig, train
             overrides = {k: getattr(args, k) for k in ("width", "blocks", "heads", "dropout")
                          if getattr(args, k) is not None}
