@@ -114,7 +114,7 @@ def write(path: PathLike, writer: Callable[[BinaryIO], None]) -> Path:
     with _checked_lock:
         must_be_new = full in _checked_as_new
         _checked_as_new.discard(full)
-    previous = _exit_on_terminate()
+    previous = exit_on_terminate()
     try:
         with open(temporary, "xb") as raw:
             guarded = _GuardedFile(raw)
@@ -139,7 +139,7 @@ def write(path: PathLike, writer: Callable[[BinaryIO], None]) -> Path:
         _try_delete(temporary)
         raise
     finally:
-        _restore(previous)
+        restore_signals(previous)
     return full
 
 
@@ -214,7 +214,7 @@ def _publish_new(temporary: Path, target: Path, shown: PathLike) -> None:
     _try_delete(temporary)
 
 
-def _exit_on_terminate():
+def exit_on_terminate():
     """While a write is under way, SIGTERM and SIGHUP raise SystemExit (143, 129) instead of ending the process
     at once, so the `except` above deletes the temporary file (SIGINT already raises KeyboardInterrupt).
     Only the main thread may set handlers; elsewhere this does nothing. Returns what to restore."""
@@ -241,7 +241,7 @@ def _raise_exit(number, frame) -> None:
     raise SystemExit(128 + number)
 
 
-def _restore(previous) -> None:
+def restore_signals(previous) -> None:
     import signal
     for number, handler in (previous or {}).items():
         try:
@@ -281,4 +281,5 @@ def _try_delete(path: Path) -> None:
         pass  # hidden and named as ours; leaving it is better than masking the real error
 
 
-__all__ = ["OutputPathError", "check", "write", "write_bytes", "write_text", "append_text", "temporary_name"]
+__all__ = ["OutputPathError", "check", "write", "write_bytes", "write_text", "append_text", "temporary_name",
+           "exit_on_terminate", "restore_signals"]
