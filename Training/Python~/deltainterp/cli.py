@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import errno
 import json
 import math
 import os
@@ -10,6 +11,12 @@ from pathlib import Path
 from typing import List, Optional
 
 from . import safe_output
+from .terminal_text import LINE_LENGTH, SafeStream, safe
+
+
+def shown(path) -> str:
+    """A path or name as a message shows it: escaped (terminal_text.safe), clipped only beyond a line's length."""
+    return safe(path, LINE_LENGTH)
 
 DEFAULT_DATA = "../shared/data/lafan1"
 DEFAULT_STATS = "../shared/data/lafan1/train_stats_official.json"
@@ -77,7 +84,7 @@ def _run_prepare(args) -> int:
         from .data import prepare
         safe_output.check(args.out, args.force, [args.stats, *_bvh_files(args.data[0])])  # before reading any BVH
         pack = prepare(args.data[0], args.out, args.stats)
-        print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
+        print(f"wrote {shown(args.out)}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
               f"{pack.skeleton.joint_count} joints")
         return 0
     from .datasets import open_source, plan_files, prepare_any
@@ -106,10 +113,10 @@ def _run_prepare(args) -> int:
                   if not pack.is_augmented(i)) * pack.frame_time
     for s in sources:
         n = sum(1 for p in originals if p.folder == str(s.folder))
-        print(f"  {s.folder}: {n} files" + (f" (manifest {s.manifest})" if s.manifest else ""))
+        print(f"  {shown(s.folder)}: {n} files" + (f" (manifest {shown(s.manifest)})" if s.manifest else ""))
     if args.holdout:
-        print(f"  held out: files matching {' '.join(args.holdout)}")
-    print(f"wrote {args.out}: {len(originals)} files ({seconds / 60:.1f} min at {1 / pack.frame_time:.0f} fps)"
+        print(f"  held out: files matching {safe(' '.join(args.holdout), LINE_LENGTH)}")
+    print(f"wrote {shown(args.out)}: {len(originals)} files ({seconds / 60:.1f} min at {1 / pack.frame_time:.0f} fps)"
           + (f" + {len(plans) - len(originals)} time-scaled copies" if len(plans) > len(originals) else "")
           + f", {len(pack.root_positions)} frames, {pack.skeleton.joint_count} joints")
     return 0
@@ -295,7 +302,7 @@ def _run_quantize(args) -> int:
     for kind, path in report.paths.items():
         g = report.graphs[kind]
         before, after = report.sizes[kind]
-        print(f"  {kind:<5} {path}  {_size(before)} → {_size(after)}  {len(g.quantized)} MatMuls int8, "
+        print(f"  {kind:<5} {shown(path)}  {_size(before)} → {_size(after)}  {len(g.quantized)} MatMuls int8, "
               f"{len(g.kept)} float; max |int8 − float| / max |float| = {report.relative_difference[kind]:.2%}")
     return 0
 
@@ -427,10 +434,10 @@ def _run_evaluate_export_fixtures(args) -> int:
         _refuse_non_finite(report, args.data)
         safe_output.write_text(args.json, json.dumps(report, indent=2, allow_nan=False) + "\n")
         print(format_table(report))
-        print(f"\nwrote {args.json}")
+        print(f"\nwrote {shown(args.json)}")
         if args.plot:
             from .plots import plot_benchmark
-            print(f"wrote {plot_benchmark(report, args.plot)}")
+            print(f"wrote {shown(plot_benchmark(report, args.plot))}")
         return 0
     if args.verb == "export":
         from .checkpoint import load_checkpoint
@@ -444,10 +451,10 @@ def _run_evaluate_export_fixtures(args) -> int:
         else:
             loaded = load_checkpoint(args.checkpoint)
         report = export_model(loaded, args.out, args.name)
-        print(f"{args.name}: {report.parameters:,} parameters, opset 15, checked against torch "
+        print(f"{shown(args.name)}: {report.parameters:,} parameters, opset 15, checked against torch "
               f"(max |diff| {report.max_difference:.2g})")
         for kind, path in report.paths.items():
-            print(f"  {kind:<5} {path}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")
+            print(f"  {kind:<5} {shown(path)}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")
         return 0
     if args.verb == "chained":
         from .chained import chained_metrics
@@ -464,9 +471,9 @@ def _run_evaluate_export_fixtures(args) -> int:
                     raise ValueError(f"--every {k}: expected at least 2 frames between keys")
                 r = chained_metrics(loaded.model, pack, skeleton, k)
                 if r.get("tails", 0) == 0:
-                    print(f"{path}  every {k}: no validation tail of {k + 1} frames or more")
+                    print(f"{shown(path)}  every {k}: no validation tail of {k + 1} frames or more")
                     continue
-                print(f"{path}  every {k}: {r['tails']} tails, {r['gaps']} gaps, {r['frames']} frames  "
+                print(f"{shown(path)}  every {k}: {r['tails']} tails, {r['gaps']} gaps, {r['frames']} frames  "
                       f"position {r['model_position']:.4f} vs SLERP {r['slerp_position']:.4f} (x{r['position_vs_slerp']:.3f})  "
                       f"L2Q {r['model_l2q']:.4f} vs {r['slerp_l2q']:.4f} (x{r['l2q_vs_slerp']:.3f})")
         return 0
@@ -476,8 +483,8 @@ def _run_evaluate_export_fixtures(args) -> int:
         data = args.data if args.data and Path(args.data).exists() else None
         paths = write_fixtures(args.out, data)
         for what, path in paths.items():
-            print(f"  {what:<10} {path}  {_size(Path(path).stat().st_size)}")
-        print("skeleton from " + (str(data) if data else "the built-in LaFAN1 copy"))
+            print(f"  {what:<10} {shown(path)}  {_size(Path(path).stat().st_size)}")
+        print("skeleton from " + (shown(data) if data else "the built-in LaFAN1 copy"))
         return 0
     raise ValueError(f"unknown verb {args.verb}")
 
@@ -495,6 +502,17 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Optional[List[str]] = None) -> int:
+    """Runs one verb with stdout and stderr escaping terminal control characters (a file name with ESC in it
+    cannot rewrite the terminal through any module's message); refusals are one line, exit 2."""
+    streams = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = SafeStream(sys.stdout), SafeStream(sys.stderr)
+    try:
+        return _main(argv)
+    finally:
+        sys.stdout, sys.stderr = streams
+
+
+def _main(argv: Optional[List[str]]) -> int:
     args = build_parser().parse_args(argv)
     try:
         if args.verb == "prepare":
@@ -518,18 +536,19 @@ def main(argv: Optional[List[str]] = None) -> int:
                               chained_share=args.chained_share, average_from=args.average_from,
                               foot_contact_weight=args.foot_contact_weight)
             path = train(cfg)
-            print(f"checkpoint: {path}")
+            print(f"checkpoint: {shown(path)}")
             return 0
         if args.verb == "quantize":
             return _run_quantize(args)
         return _run_evaluate_export_fixtures(args)
     except ValueError as e:  # CheckpointError, OutputPathError, bad data: `FILE: what; expected`
-        print(f"error: {e}", file=sys.stderr)
+        print(f"error: {safe(e, LINE_LENGTH)}", file=sys.stderr)  # one line, whatever the names in it hold
         return 2
     except OSError as e:  # unreadable or unwritable files the checks above could not foresee
         if e.filename is None:
-            print(f"error: {e}", file=sys.stderr)
+            print(f"error: {safe(e, LINE_LENGTH)}", file=sys.stderr)
         else:
-            print(f"error: {e.filename}: {e.strerror or type(e).__name__}; expected a readable file or a "
-                  "writable place", file=sys.stderr)
+            full = e.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
+            print(f"error: {safe(e.filename, LINE_LENGTH)}: {e.strerror or type(e).__name__}; expected "
+                  + ("room for it on its disk" if full else "a readable file or a writable place"), file=sys.stderr)
         return 2

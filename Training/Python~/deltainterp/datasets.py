@@ -45,6 +45,8 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from .terminal_text import NAME_LENGTH, safe
+
 MANIFEST_NAME = "inbetween-data.json"
 FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip"}
 REPO_ROOT = Path(__file__).resolve().parents[3]  # Training/Python~/deltainterp/datasets.py
@@ -201,6 +203,8 @@ def alarm(number, frame):
 signal.signal(signal.SIGALRM, alarm)
 groups = []
 for i, name in enumerate(request["names"]):
+    sys.stderr.write(f"{i}\n")  # which name, should the parent have to end this process
+    sys.stderr.flush()
     signal.setitimer(signal.ITIMER_REAL, request["seconds"])
     try:
         m = pattern.search(name)
@@ -219,20 +223,21 @@ def subject_groups(pattern: str, names: Sequence[str], manifest: str, seconds: f
     `seconds`: Python's `re` has no timeout and backtracks exponentially (`^(a|aa)+$` on a 200-character name
     never ends), so the matching runs in a child process whose alarm interrupts a slow match (the `re` engine
     checks signals), and the child itself is ended when it overruns. Refuses a slow pattern in one line."""
-    def slow(name: str) -> ValueError:
-        return _fail(manifest, f"\"groups\" {pattern[:80]!r} took more than {seconds:g} s on {name[:120]!r}",
-                     "expected a regular expression without nested repetition, e.g. \"^(\\\\d+)_\"")
+    def slow(name: str) -> ValueError:  # the C# reader's words (Tools~/Cli/Scoring/DataManifest.cs)
+        return _fail(manifest, f"\"groups\" took over {seconds:g} s on \"{safe(name, NAME_LENGTH)}\"",
+                     "expected a pattern that does not backtrack catastrophically")
     request = json.dumps({"pattern": pattern, "names": list(names), "seconds": seconds})
     try:
         r = subprocess.run([sys.executable, "-I", "-c", _GROUPS_CHILD], input=request, capture_output=True,
-                           text=True, timeout=5 + seconds * 2)
-    except subprocess.TimeoutExpired:  # an alarm the engine did not see in time: the child was killed
-        raise slow(names[0] if len(names) == 1 else f"{names[0]} (or a later file)") from None
+                           text=True, timeout=5 + seconds * (len(names) + 1))
+    except subprocess.TimeoutExpired as e:  # an alarm the engine did not see in time: the child was killed
+        started = (e.stderr.decode() if isinstance(e.stderr, bytes) else e.stderr or "").split()
+        raise slow(names[int(started[-1])] if started and started[-1].isdigit() else names[0]) from None
     try:
         answer = json.loads(r.stdout)
     except ValueError:
-        raise _fail(manifest, f"\"groups\" {pattern[:80]!r} could not be applied "
-                              f"({(r.stderr.strip().splitlines() or ['no message'])[-1][:160]})",
+        raise _fail(manifest, f"\"groups\" {safe(pattern)} could not be applied "
+                              f"({safe((r.stderr.strip().splitlines() or ['no message'])[-1])})",
                     "expected a regular expression whose group 1 names a file's subject") from None
     if "slow" in answer:
         raise slow(names[answer["slow"]])

@@ -113,7 +113,8 @@ def main(argv=None) -> int:
         message = f"{e.filename}: {e.strerror}; expected a readable file" if isinstance(e, OSError) and e.filename \
             else (str(e) if isinstance(e, safe_output.OutputPathError) else f"{args.config}: not JSON ({e}); expected "
                   "the model's 'deltainterp' metadata JSON")
-        print(f"error: {message}", file=sys.stderr)
+        from .terminal_text import LINE_LENGTH, safe
+        print(f"error: {safe(message, LINE_LENGTH)}", file=sys.stderr)
         return 2
     torch.set_num_threads(args.threads)
     lengths = [int(v) for v in args.lengths.split(",") if v.strip()]
