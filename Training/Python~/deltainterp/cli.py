@@ -512,6 +512,17 @@ def main(argv: Optional[List[str]] = None) -> int:
         sys.stdout, sys.stderr = streams
 
 
+def _close_progress_bars() -> None:
+    """Ends any progress bar a failing verb left open (e.g. train's, when a checkpoint cannot be written), so the
+    error starts a line of its own instead of trailing the bar."""
+    tqdm = sys.modules.get("tqdm")
+    for bar in list(getattr(getattr(tqdm, "tqdm", None), "_instances", None) or []):
+        try:
+            bar.close()
+        except Exception:  # noqa: BLE001 - a bar that cannot close must not hide the error
+            pass
+
+
 def _main(argv: Optional[List[str]]) -> int:
     args = build_parser().parse_args(argv)
     try:
@@ -542,9 +553,11 @@ def _main(argv: Optional[List[str]]) -> int:
             return _run_quantize(args)
         return _run_evaluate_export_fixtures(args)
     except ValueError as e:  # CheckpointError, OutputPathError, bad data: `FILE: what; expected`
+        _close_progress_bars()
         print(f"error: {safe(e, LINE_LENGTH)}", file=sys.stderr)  # one line, whatever the names in it hold
         return 2
     except OSError as e:  # unreadable or unwritable files the checks above could not foresee
+        _close_progress_bars()
         if e.filename is None:
             print(f"error: {safe(e, LINE_LENGTH)}", file=sys.stderr)
         else:

@@ -115,6 +115,7 @@ def write(path: PathLike, writer: Callable[[BinaryIO], None]) -> Path:
         must_be_new = full in _checked_as_new
         _checked_as_new.discard(full)
     previous = exit_on_terminate()
+    guarded: Optional[_GuardedFile] = None
     try:
         with open(temporary, "xb") as raw:
             guarded = _GuardedFile(raw)
@@ -129,14 +130,18 @@ def write(path: PathLike, writer: Callable[[BinaryIO], None]) -> Path:
             _publish_new(temporary, full, path)
         else:
             _rename(temporary, full)
-    except OSError as e:
+    except (KeyboardInterrupt, SystemExit):  # SIGINT, and SIGTERM/SIGHUP (below): never leave it behind
         _try_delete(temporary)
-        if e.filename is not None:
-            raise
-        # A write or flush error names no file: name the target (what the user asked for), not the temporary.
-        raise OSError(e.errno, e.strerror or str(e), str(path)) from None
-    except BaseException:  # KeyboardInterrupt (SIGINT) and SystemExit (SIGTERM, below) too: never leave it behind
+        raise
+    except BaseException as e:
         _try_delete(temporary)
+        # The disk's error, even where the writer turned it into its own (torch.save: "RuntimeError: [enforce
+        # fail at inline_container.cc] unexpected pos"), naming the target rather than the temporary file.
+        failure = guarded.failed if guarded is not None and guarded.failed is not None else e
+        if isinstance(failure, OSError) and failure.filename is None:
+            raise OSError(failure.errno, failure.strerror or str(failure), str(path)) from None
+        if failure is not e:
+            raise failure from None
         raise
     finally:
         restore_signals(previous)

@@ -152,3 +152,20 @@ def test_a_full_disk_is_one_line_naming_the_file(tmp_path):
         _assert_named_in_one_line(_prepare_on_a_small_disk(tmp_path, out), out)
     finally:
         subprocess.run(["umount", str(disk)], check=False)
+
+
+def test_a_checkpoint_past_what_the_disk_allows_is_one_line_naming_it(tmp_path, synthetic_pack_path):
+    def small_files():  # log.csv and validation.jsonl fit; the tiny model's checkpoint (~200 KB) does not
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (32 << 10, 32 << 10))
+
+    run = tmp_path / "run"
+    env = dict(os.environ, PYTHONPATH=str(TRAINING), PYTHONDONTWRITEBYTECODE="1")
+    r = subprocess.run([sys.executable, "-m", "deltainterp", "train", "--data", str(synthetic_pack_path), "--out",
+                        str(run), "--preset", "tiny", "--steps", "2", "--warmup", "1", "--batch-size", "2",
+                        "--validate-every", "100", "--checkpoint-every", "100"], capture_output=True, text=True,
+                       env=env, preexec_fn=small_files, timeout=300)
+    line = one_line(r.returncode, r.stderr)
+    assert f"{run / 'checkpoint.pt'}: File too large; expected room for it on its disk" in line, r.stderr
+    assert "Traceback" not in r.stderr and "Exception ignored" not in r.stderr, r.stderr
+    assert not (run / "checkpoint.pt").exists() and leftovers(run) == []
