@@ -45,6 +45,8 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from . import safe_output
+from .safe_input import check_regular
 from .terminal_text import NAME_LENGTH, safe
 
 MANIFEST_NAME = "inbetween-data.json"
@@ -278,7 +280,6 @@ def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]
 
 
 def _frame_time(path: Path) -> float:
-    from .safe_input import check_regular
     check_regular(path, "a BVH file")  # a named pipe would block the read
     with open(path, "r", encoding="utf-8", errors="replace") as f:
         for i, line in enumerate(f):
@@ -298,7 +299,6 @@ def _frame_time(path: Path) -> float:
 def _file_digest(path: Path, max_bytes: Optional[int] = None, expected: str = "a BVH file") -> str:
     """SHA-256 of the file's bytes, read in chunks. With `max_bytes`, a larger file is refused from its size,
     before it is read (a sparse 2 GB map cost 2.3 GB of memory when it was read whole to hash it)."""
-    from .safe_input import check_regular
     check_regular(path, expected)
     size = path.stat().st_size
     if max_bytes is not None and size > max_bytes:
@@ -357,7 +357,6 @@ def retarget_all(plans: List[FilePlan], cache: Path, model: Optional[str] = None
     """Each plan through `inbetween retarget` (cached under `cache` by the file's content, settings, map and the
     tool's version). SIGINT, SIGTERM or SIGHUP, or one file failing, ends the running children (their process
     groups) and removes their temporary files before the error or exit goes on."""
-    from . import safe_output
     cache.mkdir(parents=True, exist_ok=True)
     tool = cli_command()
     if tool == [str(REPO_ROOT / "Tools~" / "inbetween")]:

@@ -12,6 +12,8 @@ from typing import Callable, Dict, List
 
 import numpy as np
 
+from .operators import ALLOWED
+
 Array = np.ndarray
 
 
@@ -212,7 +214,6 @@ def check_runnable(graph, source: str = "model") -> None:
     """Refuses, before any node runs, a graph with a node outside the model contract (operators.ALLOWED and the
     int8 operators of `quantize`) or one this evaluator lacks: a `Loop` of 10^12 trips, an `If`, a subgraph or a
     custom domain never runs, and a missing operator is one line instead of a NotImplementedError traceback."""
-    from .operators import ALLOWED
     import onnx
     for node in graph.node:
         operator = _operator(node)
@@ -267,6 +268,5 @@ def run_model(model, feeds: Dict[str, Array]) -> Dict[str, Array]:
     import onnx.numpy_helper
     source = "model"
     if not hasattr(model, "graph"):
-        from .safe_input import load_onnx
-        source, model = str(model), load_onnx(model, "an ONNX graph")
-    return run_graph(model.graph, feeds, source)
+        source, model = str(model), onnx.load(str(model))
+    return run_graph(model.graph, feeds, source)  # every node checked before the first runs

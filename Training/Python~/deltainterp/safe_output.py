@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import errno
 import os
+import signal
 import stat
 import threading
 import uuid
@@ -223,8 +224,6 @@ def exit_on_terminate():
     """While a write is under way, SIGTERM and SIGHUP raise SystemExit (143, 129) instead of ending the process
     at once, so the `except` above deletes the temporary file (SIGINT already raises KeyboardInterrupt).
     Only the main thread may set handlers; elsewhere this does nothing. Returns what to restore."""
-    import signal
-    import threading
     if threading.current_thread() is not threading.main_thread():
         return None
     previous = {}
@@ -247,7 +246,6 @@ def _raise_exit(number, frame) -> None:
 
 
 def restore_signals(previous) -> None:
-    import signal
     for number, handler in (previous or {}).items():
         try:
             signal.signal(number, handler)
