@@ -109,6 +109,13 @@ def test_every_trainer_writer_refuses_a_path_another_run_claimed(tmp_path, capsy
     code, _, err = run_cli(capsys, ["quantize", "--model", FIXTURES / "tiny-model.onnx", "--out", int8])
     one_line(code, err, APPEARED)
     assert int8.read_text() == "the other run's"
+
+    import deltainterp.export as export
+    exported = tmp_path / "e.onnx"
+    monkeypatch.setattr(export, "export_model", _other_run_writes(exported, export.export_model))
+    code, _, err = run_cli(capsys, ["export", "--checkpoint", FIXTURES / "tiny-model.pt", "--out", exported])
+    one_line(code, err, APPEARED)
+    assert exported.read_text() == "the other run's" and not (tmp_path / "e.keys.onnx").exists()
     assert leftovers(tmp_path) == []
 
 
