@@ -346,7 +346,9 @@ def _check_real(name: str, value: Optional[float], low: float, high: float, what
 def check_threads(value: int) -> None:
     """--threads from 1 to the processors: more only compete for the same cores (500 took 19 s to start, 2^31
     ended in std::bad_alloc blamed on the model)."""
-    _check_whole("--threads", value, 1, processors(), "a thread count (at most the processors of this machine)")
+    if value is not None and not 1 <= value <= processors():
+        _refuse_option("--threads", value, f"1 to {processors()} threads (the processors of this machine; more only "
+                                           "compete for the same cores)")
 
 
 def check_train_options(args) -> None:
