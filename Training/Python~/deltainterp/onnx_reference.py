@@ -12,7 +12,7 @@ from typing import Callable, Dict, List
 
 import numpy as np
 
-from .operators import ALLOWED
+from .operators import ALLOWED, FORBIDDEN
 
 Array = np.ndarray
 
@@ -217,19 +217,24 @@ def check_runnable(graph, source: str = "model") -> None:
     import onnx
     for node in graph.node:
         operator = _operator(node)
-        shown = f"node {node.name[:80]!r} ({operator[:80]})" if node.name else f"a {operator[:80]} node"
+        name = operator if len(operator) <= 64 else operator[:64] + "…"
+        node_name = f" (node {node.name[:80]!r})" if node.name else ""
         if operator not in ALLOWED and operator not in QUANTIZED:
+            # The C# ModelOperators.Check's words, so both languages refuse a graph alike.
+            why = FORBIDDEN.get(operator, "not imported by both Sentis 2.x and Barracuda")
             raise UnsupportedOperatorError(
-                f"{source}: {shown} is outside the model contract's operators; expected only those both Unity "
-                "Sentis and Barracuda import (deltainterp/operators.py; no Loop, If or custom domain), as `export` "
-                "writes them")
+                f"{source}: the graph uses the operator {name}{node_name} outside the model contract, so nothing was "
+                f"run ({name}: {why}); expected only the operators listed in Documentation~/model-contract.md "
+                "(Operators), as python3 -m deltainterp export writes them")
         if any(a.type in (onnx.AttributeProto.GRAPH, onnx.AttributeProto.GRAPHS) for a in node.attribute):
-            raise UnsupportedOperatorError(f"{source}: {shown} holds a subgraph; expected a graph without control "
-                                           "flow, as `export` writes it")
+            raise UnsupportedOperatorError(
+                f"{source}: the graph's node {name}{node_name} holds a subgraph, so nothing was run; expected a "
+                "graph without control flow, as python3 -m deltainterp export writes it")
         if operator not in RUNNABLE:
             raise UnsupportedOperatorError(
-                f"{source}: {shown} is an operator the trainer's reference evaluator (deltainterp/onnx_reference.py) "
-                "lacks; expected a graph of the operators `export` and `quantize` write")
+                f"{source}: the graph uses the operator {name}{node_name}, which the trainer's reference evaluator "
+                "(deltainterp/onnx_reference.py) lacks, so nothing was run; expected the operators python3 -m "
+                "deltainterp export and quantize write")
 
 
 # What run_graph can evaluate, spelled as _operator spells it (the contrib operator only in its own domain).
