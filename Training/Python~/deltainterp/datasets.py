@@ -38,8 +38,8 @@ import sys
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
-from glob import escape as glob_escape
 from dataclasses import dataclass, field
+from glob import escape as glob_escape
 from pathlib import Path
 from typing import Dict, List, Optional, Sequence
 

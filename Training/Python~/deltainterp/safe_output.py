@@ -221,8 +221,9 @@ def _publish_new(temporary: Path, target: Path, shown: PathLike) -> None:
 
 
 def exit_on_terminate():
-    """While a write is under way, SIGTERM and SIGHUP raise SystemExit (143, 129) instead of ending the process
-    at once, so the `except` above deletes the temporary file (SIGINT already raises KeyboardInterrupt).
+    """While a write (or `prepare`'s retargeting, datasets.retarget_all) is under way, SIGTERM and SIGHUP raise
+    SystemExit (143, 129) instead of ending the process at once, so the `except` above deletes the temporary file
+    (and retarget_all ends its children); SIGINT already raises KeyboardInterrupt.
     Only the main thread may set handlers; elsewhere this does nothing. Returns what to restore."""
     if threading.current_thread() is not threading.main_thread():
         return None
