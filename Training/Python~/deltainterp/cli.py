@@ -178,7 +178,8 @@ def _train(sub) -> None:
                    help="from this step on, the run's weights (checkpoint, validation, export) are the mean of every "
                         "later step's (stochastic weight averaging; default 0: off)")
     p.add_argument("--threads", type=int, default=1,
-                   help="torch intra-op threads (default 1: measured fastest on a 2-core CPU, see model card)")
+                   help="torch intra-op threads (default 1: measured fastest on a 2-core CPU, see model card; at most "
+                        "the processors of this machine)")
     p.add_argument("--checkpoint-every", type=int, default=250)
     p.add_argument("--validate-every", type=int, default=500)
     p.add_argument("--max-minutes", type=float, default=0.0,
@@ -222,7 +223,8 @@ def _evaluate_export_fixtures(sub) -> None:
                    help="with --past-frames < 10: feed the P frames as they are (key indices 0..P-1), or repeat "
                         "the earliest to fill 10 (for models trained with 10 past frames only)")
     p.add_argument("--batch-size", type=int, default=64, help="windows per network call (default 64)")
-    p.add_argument("--threads", type=int, default=1, help="torch intra-op threads (default 1)")
+    p.add_argument("--threads", type=int, default=1,
+                   help="torch intra-op threads (default 1; at most the processors of this machine)")
     p.add_argument("--json", required=True, help="where to write the results JSON")
     p.add_argument("--plot", help="also draw the table as bar charts into this PNG")
     p.add_argument("--force", action="store_true", help="replace existing --json/--plot files")
