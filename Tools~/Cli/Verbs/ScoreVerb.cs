@@ -130,10 +130,10 @@ namespace DeltaInterpolator.Cli.Verbs
                     }
                 });
                 ScoreTable.Print(sheet, every);
-                foreach (string line in accepted) AnsiConsole.MarkupLine(Markup.Escape(line));
+                foreach (string line in accepted) AnsiConsole.MarkupLine(Markup.Escape("warning: " + line));
                 if (jsonFull != null)
                 {
-                    string json = ScoreReport.Json(sheet, models, every);
+                    string json = ScoreReport.Json(sheet, models, every, accepted);
                     OutputFile.Write(jsonFull, stream =>
                     {
                         using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
@@ -166,7 +166,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 int[] keys = BakeInput.Every(every, animation.Motion, e.FromFrame, models[i].Contract, e.FilePath);
                 BakeMethod[] methods = i == 0 ? BakeInput.ModelAndSlerp(models[i], null, true, null) : new[] { BakeMethod.Model(models[i]) };
                 BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up, acceptReferencePose: acceptReferencePose);
-                if (i == 0 && run.Rig is MappedRig mapped && mapped.AcceptedReference != null) accepted.Add($"warning: {e.FilePath}: {mapped.AcceptedReference}");
+                if (i == 0 && run.Rig is MappedRig mapped && mapped.AcceptedReference != null) accepted.Add($"{e.FilePath}: {mapped.AcceptedReference}");
                 BakeScores scores = BakeScores.Measure(animation.Motion, run);
                 leg = scores.LegLength;
                 frames = scores["Model"].Accuracy.Frames;

@@ -157,9 +157,13 @@ namespace DeltaInterpolator.Tests.Cli
             _dir.Write("inbetween-data.json", "{\"defaults\": {\"map\": \"map.json\"}}");
             File.Delete(_dir["out.bvh"]);
             File.Delete(_dir["baked.bvh"]);
-            CliRun score = CliHarness.Run("score", _dir.Path, "--every", "10", "--accept-reference-pose", "--model", _model);
+            CliRun score = CliHarness.Run("score", _dir.Path, "--every", "10", "--accept-reference-pose", "--json", _dir["score.json"], "--model", _model);
             Assert.That(score.ExitCode, Is.EqualTo(0), score.Stderr + score.Stdout);
             Assert.That(OneLine(score.Stdout), Does.Contain(Accepted));
+            using (var json = System.Text.Json.JsonDocument.Parse(File.ReadAllText(_dir["score.json"])))
+            {
+                Assert.That(json.RootElement.GetProperty("accepted_reference_poses")[0].GetString(), Does.Contain(Accepted).And.Contain("src_Spine (Spine)"));
+            }
         }
 
         // The console wraps at its width (80 columns when piped): the words are compared, not the line breaks.
