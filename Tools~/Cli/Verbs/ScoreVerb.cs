@@ -165,7 +165,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 JointMap? map = BakeInput.LoadMap(e.Map, animation, models[i].Contract);
                 int[] keys = BakeInput.Every(every, animation.Motion, e.FromFrame, models[i].Contract, e.FilePath);
                 BakeMethod[] methods = i == 0 ? BakeInput.ModelAndSlerp(models[i], null, true, null) : new[] { BakeMethod.Model(models[i]) };
-                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up, acceptReferencePose: acceptReferencePose);
+                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up, acceptReferencePose: acceptReferencePose || e.AcceptReferencePose);
                 if (i == 0 && run.Rig is MappedRig mapped && mapped.AcceptedReference != null) accepted.Add($"{e.FilePath}: {mapped.AcceptedReference}");
                 BakeScores scores = BakeScores.Measure(animation.Motion, run);
                 leg = scores.LegLength;

@@ -164,6 +164,13 @@ namespace DeltaInterpolator.Tests.Cli
             {
                 Assert.That(json.RootElement.GetProperty("accepted_reference_poses")[0].GetString(), Does.Contain(Accepted).And.Contain("src_Spine (Spine)"));
             }
+
+            // The manifest's per-file key (prepare's reader takes the same): refused without it, kept and reported with it.
+            CliHarness.AssertOneErrorLine(CliHarness.Run("score", _dir.Path, "--every", "10", "--model", _model), "src_Spine (Spine)");
+            _dir.Write("inbetween-data.json", "{\"defaults\": {\"map\": \"map.json\"}, \"files\": {\"dog.bvh\": {\"accept_reference_pose\": true}}}");
+            CliRun manifest = CliHarness.Run("score", _dir.Path, "--every", "10", "--model", _model);
+            Assert.That(manifest.ExitCode, Is.EqualTo(0), manifest.Stderr + manifest.Stdout);
+            Assert.That(OneLine(manifest.Stdout), Does.Contain(Accepted));
         }
 
         // The console wraps at its width (80 columns when piped): the words are compared, not the line breaks.
@@ -193,6 +200,16 @@ namespace DeltaInterpolator.Tests.Cli
             CliHarness.AssertOneErrorLine(CliHarness.Run("bake", input, "--every", "10", "--up", value, "--out", _dir["b.bvh"], "--model", _model), "--up");
             CliHarness.AssertOneErrorLine(CliHarness.Run("score", _dir.Path, "--every", "10", "--up", value, "--model", _model), "--up");
             Assert.That(File.Exists(_dir["a.bvh"]) || File.Exists(_dir["b.bvh"]), Is.False);
+        }
+
+        [TestCase("\"yes\"")]
+        [TestCase("1")]
+        [TestCase("\"true\\u001b[2J\"")]
+        public void AManifestsHostileAcceptReferencePoseIsRefusedInOneLine(string value)
+        {
+            Write("walk-y.bvh", Walk());
+            _dir.Write("inbetween-data.json", "{\"defaults\": {\"accept_reference_pose\": " + value + "}}");
+            CliHarness.AssertOneErrorLine(CliHarness.Run("score", _dir.Path, "--every", "10", "--model", _model), "\"accept_reference_pose\"");
         }
 
         [TestCase("\"x\"")]
