@@ -188,6 +188,20 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(File.Exists(_dir["a.bvh"]) || File.Exists(_dir["b.bvh"]), Is.False);
         }
 
+        /// <summary>--up is on the verbs that retarget and says so; info and check, which read only joints and offsets, take none (Documentation~/up-axis-keys-notes.md says why).</summary>
+        [Test]
+        public void UpIsOnTheVerbsThatRetargetAndTheHelpSaysWhichThoseAre()
+        {
+            foreach (string verb in new[] { "retarget", "bake", "score" })
+            {
+                CliRun help = CliHarness.Run(verb, "--help");
+                Assert.That(OneLine(help.Stdout), Does.Contain("--up").And.Contain("Taken by the verbs that retarget (retarget, bake, score)"), verb);
+                Assert.That(OneLine(help.Stdout), Does.Contain("--accept-reference-pose"), verb);
+            }
+
+            foreach (string verb in new[] { "info", "check" }) Assert.That(CliHarness.Run(verb, "--help").Stdout, Does.Not.Contain("--up"), verb);
+        }
+
         [TestCase("x")]
         [TestCase("")]
         [TestCase("zz")]
