@@ -9,6 +9,7 @@ import json
 import math
 import os
 import random
+import sys
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -60,9 +61,16 @@ class TrainConfig:
     foot_contact_weight: float = 0.0  # 0 = off; else × the planted-foot speed loss (objective.loss)
 
 
+def warmup_steps(cfg: TrainConfig) -> int:
+    """The warm-up the run uses: --warmup, or a tenth of the run when --warmup is longer than --steps
+    (a short trial run with the default 500 would otherwise never reach its learning rate)."""
+    return cfg.warmup_steps if cfg.warmup_steps <= cfg.steps else max(1, cfg.steps // 10)
+
+
 def learning_rate(cfg: TrainConfig, step: int) -> float:
-    if step < cfg.warmup_steps:
-        return 1e-6 + (cfg.peak_lr - 1e-6) * step / cfg.warmup_steps
+    warmup = warmup_steps(cfg)
+    if step < warmup:
+        return 1e-6 + (cfg.peak_lr - 1e-6) * step / warmup
     return cfg.peak_lr * (0.1 if step >= cfg.decay_at * cfg.steps else 1.0)
 
 
@@ -350,8 +358,14 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             print(f"warning: {ckpt_path}: --steps {cfg.steps} but the run used {saved_cfg['steps']}: training on to "
                   f"step {cfg.steps}, the lr drop moves from step {int(cfg.decay_at * saved_cfg['steps'])} to "
                   f"{int(cfg.decay_at * cfg.steps)}")
+            before = warmup_steps(TrainConfig(**{**asdict(cfg), "steps": int(saved_cfg["steps"])}))
+            if before != warmup_steps(cfg):
+                print(f"warning: {ckpt_path}: the warm-up changes with --steps, from {before} to {warmup_steps(cfg)} steps")
         if rank == 0 and progress and saved_cfg.get("data", cfg.data) != cfg.data:
             print(f"warning: {ckpt_path}: --data {cfg.data} but the run used {saved_cfg['data']}")
+    if rank == 0 and progress and warmup_steps(cfg) != cfg.warmup_steps:
+        print(f"warning: --warmup {cfg.warmup_steps} is longer than --steps {cfg.steps}: warming up over "
+              f"{warmup_steps(cfg)} steps (a tenth of the run) instead")
     out.mkdir(parents=True, exist_ok=True)
     pack = load_pack(cfg.data)
     train_starts, val_starts = split_windows(pack)
@@ -443,7 +457,10 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     losses = ["total", "quat", "pos", "key_quat", "key_pos"] + (["foot"] if cfg.foot_contact_weight > 0 else [])
     fields = ["step", "lr"] + losses + ["seconds"]
     bar = None
-    if rank == 0 and progress:
+    # A terminal gets a progress bar; a log file (nohup, CI) one line per log interval instead of
+    # thousands of carriage-return redraws.
+    line_progress = rank == 0 and progress and not sys.stderr.isatty()
+    if rank == 0 and progress and not line_progress:
         from tqdm import tqdm
         bar = tqdm(total=cfg.steps, initial=step, desc=f"train {cfg.preset}", unit="step", dynamic_ncols=True)
     started = time.time()
@@ -517,6 +534,9 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
             w.writerow(row)
             safe_output.append_text(log_path, text.getvalue())  # whole file via temp + rename
             window_losses.clear()
+            if line_progress:
+                print(f"train {cfg.preset}: step {step}/{cfg.steps}  loss {row['total']:.4f}  lr {lr:.1e}  "
+                      f"{row['seconds']:.0f} s", file=sys.stderr, flush=True)
         if rank == 0 and len(val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             shipped = averaged or model  # validate what the checkpoint exports
             last_val = validation_metrics(shipped, pack, val_starts, skeleton)
