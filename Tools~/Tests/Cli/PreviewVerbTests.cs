@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using System.Text.RegularExpressions;
 using NUnit.Framework;
 
@@ -74,6 +75,25 @@ namespace DeltaInterpolator.Tests.Cli
             CliHarness.AssertOneErrorLine(CliHarness.Run("preview", Sample, "--map", lacking, "--out", lacking, "--force"), "other-rig.json");
             Assert.That(File.ReadAllText(lacking), Is.EqualTo("{\"LeftHand\": \"hand_l\"}"));
             Assert.That(File.Exists(html), Is.False, "nothing written");
+        }
+
+        /// <summary>
+        /// `info` at 80 columns (a pipe): one line a joint, none wider than the terminal (it took four lines a
+        /// joint, 270 lines for a Mixamo rig). Before: channels and offsets wrapped into four lines.
+        /// </summary>
+        [Test]
+        public void InfoListsOneLineAJointAt80Columns()
+        {
+            CliRun run = CliHarness.Run("info", Sample);
+            CliHarness.AssertSuccess(run);
+            string[] lines = run.Stdout.Split('\n');
+            Assert.That(lines.Max(l => l.TrimEnd('\r').Length), Is.LessThanOrEqualTo(80), run.Stdout);
+            string[] rows = lines.Where(l => Regex.IsMatch(l, "^│ +[0-9]+ │")).ToArray();
+            Assert.That(rows, Has.Length.EqualTo(31), "one row a joint, each on one line:\n" + run.Stdout);
+            Assert.That(rows[0], Does.Contain("Hips").And.Contain("pos XYZ rot ZYX"));
+            Assert.That(rows.Count(r => r.Contains("LeftToeBase +")), Is.EqualTo(1), "End Sites marked");
+            Assert.That(DeltaInterpolator.Cli.Verbs.InfoVerb.CompactChannels(new[] { Core.Bvh.BvhChannel.Zrotation, Core.Bvh.BvhChannel.Xrotation, Core.Bvh.BvhChannel.Yrotation }), Is.EqualTo("rot ZXY"));
+            Assert.That(DeltaInterpolator.Cli.Verbs.InfoVerb.CompactChannels(new[] { Core.Bvh.BvhChannel.Xrotation, Core.Bvh.BvhChannel.Xposition }), Is.EqualTo("2 Xrotation Xposition"));
         }
 
         [Test]
