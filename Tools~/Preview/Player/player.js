@@ -69,11 +69,12 @@
       chip.appendChild(small(' mean error ' + distance(t.meanError) + (keys.length ? ' per joint between keys' : ' per joint')));
     }
     legend.appendChild(chip);
-    if (t.planted && !legend.dataset.planted) {
-      legend.dataset.planted = '1';
-      legend.appendChild(small('ellipses on the floor: planted feet (within 3 % of a leg length of the ground, slower than 15 % of a leg length per second)'));
-    }
   });
+  // The footprint note after every track's chip, not between two of them.
+  if (tracks.some(function (t) { return t.planted; })) {
+    legend.dataset.planted = '1';
+    legend.appendChild(small('ellipses on the floor: planted feet (within 3 % of a leg length of the ground, slower than 15 % of a leg length per second)'));
+  }
   var km = document.getElementById('keymarks');
   keys.forEach(function (k) {
     var b = document.createElement('b');

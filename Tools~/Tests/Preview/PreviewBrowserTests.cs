@@ -78,26 +78,45 @@ namespace DeltaInterpolator.Tests.Preview
                 new[] { ("Ground truth", truth), ("SLERP", PreviewMotion.SlerpBaked(truth, keys)), ("Model", PreviewMotion.Wobbled(PreviewMotion.SlerpBaked(truth, keys), 6)) },
                 keys,
                 0);
+            // Planted feet marked, as a bake's preview has them: the legend then carries its note too.
+            int[] feet = { truth.Skeleton.JointCount - 1, truth.Skeleton.JointCount - 4 };
+            foreach (PreviewTrack track in scene.Tracks) track.MarkPlantedFeet(feet, new bool[track.FrameCount * feet.Length]);
             string html = Path.Combine(_folder, "layout.html");
             PreviewWriter.WriteHtml(scene, html);
             (IPlaywright playwright, IBrowser browser) = await Chromium.LaunchAsync(chromium);
             try
             {
-                IPage page = await browser.NewPageAsync(new BrowserNewPageOptions { ViewportSize = new ViewportSize { Width = 1280, Height = 800 } });
+                // A 1280×800 screen, and the page a browser window on it shows (tabs and address bar take ~100 px).
+                foreach (int height in new[] { 700, 800 })
+                {
+                    await CheckLayout(browser, html, scene, height);
+                }
+            }
+            finally
+            {
+                await browser.CloseAsync();
+                playwright.Dispose();
+            }
+        }
+
+        private async Task CheckLayout(IBrowser browser, string html, PreviewScene scene, int viewportHeight)
+        {
+            {
+                IPage page = await browser.NewPageAsync(new BrowserNewPageOptions { ViewportSize = new ViewportSize { Width = 1280, Height = viewportHeight } });
                 List<string> problems = Watch(page, out _);
                 await page.GotoAsync(new Uri(html).AbsoluteUri + "#frame=0");
                 await page.WaitForFunctionAsync("window.preview !== undefined");
                 await page.WaitForTimeoutAsync(200);
 
                 double[] plot = await page.EvaluateAsync<double[]>("(() => { const r = document.getElementById('plot').getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()");
-                Assert.That(plot[3], Is.LessThanOrEqualTo(800), "the error plot's bottom is within the 800 px viewport");
+                Assert.That(plot[3], Is.LessThanOrEqualTo(viewportHeight), $"the error plot's bottom is within the {viewportHeight} px viewport");
                 Assert.That(plot[3] - plot[1], Is.GreaterThanOrEqualTo(100), "the plot keeps a readable height");
-                Assert.That(await page.EvaluateAsync<double>("document.documentElement.scrollHeight"), Is.LessThanOrEqualTo(800), "nothing to scroll to");
+                Assert.That(await page.EvaluateAsync<double>("document.documentElement.scrollHeight"), Is.LessThanOrEqualTo(viewportHeight), "nothing to scroll to");
 
                 // The screenshot shows what a person sees: the viewport only. The curves of SLERP and the
                 // model must be in it, inside the plot's box.
                 PngImage shot = PngImage.Decode(await page.ScreenshotAsync());
-                Assert.That(shot.Height, Is.EqualTo(800));
+                Assert.That(shot.Height, Is.EqualTo(viewportHeight));
                 for (int t = 1; t < scene.Tracks.Count; t++)
                 {
                     int inPlot = CountNearIn(shot, TrackColors.Of(scene, t), 40, (int)plot[0], (int)plot[1], (int)plot[2], (int)Math.Min(plot[3], shot.Height));
@@ -120,12 +139,8 @@ namespace DeltaInterpolator.Tests.Preview
                 Assert.That(legend, Does.Match("SLERP mean error [0-9.]+ cm per joint between keys"));
                 Assert.That(await page.Locator("#truth-name").TextContentAsync(), Does.EndWith("(cm)"));
                 Assert.That(problems, Is.Empty);
-                await page.ScreenshotAsync(new PageScreenshotOptions { Path = Path.Combine(_folder, "layout-1280x800.png") });
-            }
-            finally
-            {
-                await browser.CloseAsync();
-                playwright.Dispose();
+                await page.ScreenshotAsync(new PageScreenshotOptions { Path = Path.Combine(_folder, $"layout-1280x{viewportHeight}.png") });
+                await page.CloseAsync();
             }
         }
 
