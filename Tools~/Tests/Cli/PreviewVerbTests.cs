@@ -54,6 +54,39 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(File.ReadAllText(Path.Combine(_dir, "p.svg")), Does.Contain("trails: Hips, LeftHand, RightHand, LeftFoot, RightFoot;"));
         }
 
+        /// <summary>
+        /// Issue 30: a real bake with keys every 0.5 s on a 60 fps clip (the 120 fps sample declared 60 fps,
+        /// a key every 30 of its frames): its contact sheet draws poses between keys, in every row, labelled
+        /// with the file's frame numbers.
+        /// </summary>
+        [Test]
+        public void ABakesContactSheetShowsPosesBetweenItsKeys()
+        {
+            // The sample's first 302 frames: keys 1, 31, …, 301 are eleven, which the sheet used to thin to
+            // every other key with the skipped key as the pose "between" them — only keys were drawn.
+            string[] lines = File.ReadAllLines(Sample);
+            int motion = Array.FindIndex(lines, l => l.StartsWith("Frame Time:", StringComparison.Ordinal));
+            string clip = Path.Combine(_dir, "clip.bvh");
+            File.WriteAllLines(clip, lines.Take(motion - 1).Append("Frames: 302").Append(lines[motion]).Concat(lines.Skip(motion + 1).Take(302)));
+            string baked = Path.Combine(_dir, "b.bvh"), html = Path.Combine(_dir, "b.html"), png = Path.Combine(_dir, "b.png");
+            CliRun run = CliHarness.Run("bake", clip, "--input-fps", "60", "--every", "30", "--reference-frame", "0", "--from-frame", "1",
+                "--out", baked, "--preview", html, "--png", png);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+            string svg = File.ReadAllText(Path.Combine(_dir, "b.svg"));
+            Match footer = Regex.Match(svg, "poses at frames ([0-9, ]+);");
+            Assert.That(footer.Success, Is.True);
+            int[] poses = footer.Groups[1].Value.Split(',').Select(f => int.Parse(f.Trim(), System.Globalization.CultureInfo.InvariantCulture)).ToArray();
+            // Keys at file frames 1, 31, 61, … and the last; the drawing's frames are the file's too.
+            int[] between = poses.Where(f => (f - 1) % 30 != 0).ToArray();
+            Assert.That(poses.Min(), Is.GreaterThanOrEqualTo(1), "labelled with the file's frame numbers (the bake starts at frame 1)");
+            Assert.That(between.Length, Is.GreaterThanOrEqualTo(3), "poses between keys: " + footer.Groups[1].Value);
+            Assert.That(poses.Max(), Is.EqualTo(301));
+            foreach (string row in new[] { "SLERP", "Model" })
+            {
+                Assert.That(svg, Does.Contain(">" + row + "</text>"), row + "'s row");
+            }
+        }
+
         [Test]
         public void HostileMapsAreRefusedInOneLine()
         {
