@@ -130,8 +130,11 @@ def test_every_readme_command_runs_as_written(tmp_path):
     commands = [c for readme in READMES for c in parse(readme)]
     assert len(commands) >= 10, "the READMEs' bash blocks were not found"
     # Build the CLI first (not a README step): a fresh checkout's first ./Tools~/inbetween builds it.
+    begin = time.time()
     subprocess.run([str(ROOT / "Tools~" / "inbetween"), "--help"], cwd=ROOT, check=True, capture_output=True, timeout=1200)
+    built = time.time() - begin
     clone = scratch_clone(tmp_path)
+    copied = time.time() - begin - built
     shared_link = tmp_path / "shared"
     have_data = (SHARED / "data").is_dir()
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH",)}
@@ -173,7 +176,8 @@ def test_every_readme_command_runs_as_written(tmp_path):
             skipped_outputs += c.outputs()
             tail = "\n".join((done.stdout + done.stderr).strip().splitlines()[-8:])
             failures.append(f"{c.where}: exit {done.returncode}: {c.text}\n{tail}")
-    report = (f"README commands: {len(ran)} ran in {time.time() - started:.0f} s, {len(skipped)} skipped\n"
+    report = (f"README commands: {len(ran)} ran in {time.time() - started:.0f} s, {len(skipped)} skipped "
+              f"(before them: {built:.0f} s to build the CLI when needed, {copied:.0f} s to copy the tree)\n"
               + "\n".join(ran) + "\nskipped:\n" + "\n".join("  " + s for s in skipped))
     print(report)
     assert not failures, "\n\n".join(failures) + "\n\n" + report
