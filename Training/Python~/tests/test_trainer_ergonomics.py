@@ -45,3 +45,11 @@ def test_the_train_wrapper_runs_the_trainer_and_refuses_a_missing_interpreter(tm
     refused = subprocess.run([str(ROOT / "Tools~" / "train"), "--help"], env=env, capture_output=True, text=True, timeout=60)
     assert refused.returncode == 2
     assert refused.stderr.splitlines() == [f"train: {tmp_path / 'no-python'}: no such interpreter; expected /usr/bin/python3 or DELTAINTERP_PYTHON naming one"]
+    # An interpreter without torch (here one that finds nothing): refused in one line before the trainer starts.
+    bare = tmp_path / "bare-python"
+    bare.write_text("#!/bin/sh\nexit 1\n")
+    bare.chmod(0o755)
+    env["DELTAINTERP_PYTHON"] = str(bare)
+    refused = subprocess.run([str(ROOT / "Tools~" / "train"), "--help"], env=env, capture_output=True, text=True, timeout=60)
+    assert refused.returncode == 2
+    assert len(refused.stderr.splitlines()) == 1 and "lacks torch or numpy; expected" in refused.stderr, refused.stderr
