@@ -8,7 +8,7 @@ local Z towards the hint given there). From the repository root:
     ./Tools~/inbetween retarget Samples~/Demo/cmu_01_01_jumps_turn.bvh --to model --reference-frame 0 \
         --out /tmp/model-tpose.bvh --force
     PYTHONPATH=Training/Python~ /usr/bin/python3 \
-        Documentation~/images/model-skeleton.py /tmp/model-tpose.bvh Documentation~/images/model-skeleton.png
+        Training/Python~/tools/model_skeleton_figure.py /tmp/model-tpose.bvh Documentation~/images/model-skeleton.png
 """
 import sys
 
