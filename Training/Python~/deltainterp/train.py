@@ -641,7 +641,7 @@ def run_steps(run: TrainingRun, source: WindowSource) -> None:
             window_losses.clear()
             if line_progress:
                 print(f"train {cfg.preset}: step {step}/{cfg.steps}  loss {mean:.4f}  lr {lr:.1e}  "
-                      f"{time.time() - run.started:.0f} s", file=sys.stderr, flush=True)
+                      f"{time.time() - run.started:.0f} s", flush=True)  # stdout: stderr keeps one line per error
         if run.rank == 0 and len(run.val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             validate(run, long_val)
         out_of_time = time_is_up(run)

@@ -29,8 +29,9 @@ def test_progress_is_one_line_per_interval_off_a_terminal_and_the_warmup_warning
     assert code == 0, err
     assert "warning: --warmup 500 is longer than --steps 100: warming up over 10 steps (a tenth of the run) instead" in out
     assert "\r" not in err, "no carriage-return redraws in a log"
-    progress = [line for line in err.splitlines() if line.startswith("train tiny: step ")]
-    assert [line.split()[3] for line in progress] == ["50/100", "100/100"], err
+    progress = [line for line in out.splitlines() if line.startswith("train tiny: step ")]
+    assert [line.split()[3] for line in progress] == ["50/100", "100/100"], out
+    assert "train tiny: step" not in err, "stderr keeps one line per error"
     assert "%|" not in err, "no tqdm bar"
 
 
