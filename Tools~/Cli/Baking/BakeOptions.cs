@@ -187,14 +187,16 @@ namespace DeltaInterpolator.Cli.Baking
             if (r.FromFrame < 0) throw new CliErrors.UsageException($"inbetween bake: --from-frame {r.FromFrame}; expected a frame index from 0");
             if (keysText != null) r.Keys = ParseKeys(keysText, r.Input);
 
-            // Before any work: the outputs must be writable and must not replace an input or each other.
-            r.OutFull = OutputFile.Check(r.OutPath, r.Force, r.Input, r.ModelPath, r.StatsPath, r.MapPath);
+            // Before any work: the outputs must be writable and must not replace an input or each other. A key
+            // list file (--keys @FILE) is read like the others, so --force never lets an output replace it.
+            string?[] inputs = { r.Input, r.ModelPath, r.StatsPath, r.MapPath, keysText == null ? null : KeyListArgument.FilePath(keysText) };
+            r.OutFull = OutputFile.Check(r.OutPath, r.Force, inputs);
             r.JsonPath = parse.GetValue(_json);
-            r.JsonFull = r.JsonPath == null ? null : OutputFile.Check(r.JsonPath, r.Force, r.Input, r.ModelPath, r.StatsPath, r.MapPath);
+            r.JsonFull = r.JsonPath == null ? null : OutputFile.Check(r.JsonPath, r.Force, inputs);
             if (r.JsonFull != null && string.Equals(r.JsonFull, r.OutFull, StringComparison.Ordinal)) throw new CliErrors.UsageException($"{r.JsonPath}: the same file as --out; expected a different path for --json");
             r.PreviewPath = parse.GetValue(_preview);
             r.PngPath = parse.GetValue(_png);
-            BakePreview.CheckOutputs(r.PreviewPath, r.PngPath, r.JsonFull == null ? new[] { r.OutFull } : new[] { r.OutFull, r.JsonFull }, r.Force, r.Input, r.ModelPath, r.StatsPath, r.MapPath);
+            BakePreview.CheckOutputs(r.PreviewPath, r.PngPath, r.JsonFull == null ? new[] { r.OutFull } : new[] { r.OutFull, r.JsonFull }, r.Force, inputs);
             return r;
         }
 

@@ -128,7 +128,9 @@ namespace DeltaInterpolator.Cli.Verbs
             (int Start, int End)? range = FrameRangeArgument.Parse(parse.GetValue(_frames));
             int[] keys = ParseKeys(parse.GetValue(_keys));
             bool force = parse.GetValue(_output.Force);
-            string[] inputs = requests.Select(r => r.Path).ToArray();
+            // A key list file (--keys @FILE) is an input too: no output replaces it, --force or not.
+            string? keyFile = parse.GetValue(_keys) is string keysText ? KeyListArgument.FilePath(keysText) : null;
+            string[] inputs = requests.Select(r => r.Path).Concat(keyFile == null ? Array.Empty<string>() : new[] { keyFile }).ToArray();
             string htmlPath = parse.GetValue(_out)!;
             OutputFile.Check(htmlPath, force, inputs);
             string? pngPath = parse.GetValue(_png);
