@@ -84,9 +84,8 @@ namespace DeltaInterpolator.Cli.Scoring
         {
             var result = new List<Entry>();
             string root = System.IO.Path.GetFullPath(Folder);
-            // Bounded depth: a symbolic link that loops back into the folder cannot recurse forever.
-            var files = new List<string>(Directory.EnumerateFiles(root, "*", new EnumerationOptions { RecurseSubdirectories = true, MaxRecursionDepth = 16, AttributesToSkip = 0, IgnoreInaccessible = true }));
-            files.Sort(StringComparer.Ordinal);
+            // Each real folder once: a directory link looping back into the folder adds nothing.
+            List<string> files = DataFolderWalk.Files(root);
             string baseDir = Path == null ? root : System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(Path))!;
             foreach (string file in files)
             {
