@@ -43,6 +43,7 @@ namespace DeltaInterpolator.Core.BvhImport
             Skeleton skeleton = animation.Skeleton;
             MotionClip motion = animation.Motion;
             int jointCount = skeleton.JointCount;
+            RequireBoundedPaths(skeleton, source);
             double scale = metresPerUnit > 0 && !double.IsInfinity(metresPerUnit) ? metresPerUnit : BvhUnitScale.Detect(skeleton, source);
 
             HumanoidMapping? humanoid = HumanoidMapping.Find(skeleton);
@@ -83,6 +84,42 @@ namespace DeltaInterpolator.Core.BvhImport
             return new BvhImportResult(source, name, rootName, frameRate, motion.FrameCount, scale, legLength, joints, figure, humanoid, positionsUnity, rotationsUnity, curves);
         }
 
+        /// <summary>
+        /// The most characters all joints' transform paths may hold together (<see cref="ImportedJoint.Path"/>,
+        /// which curve bindings need whole): 4,194,304, 8 MB of text. A humanoid's paths hold a few thousand; a
+        /// chain of 16,000 joints each inside the last holds hundreds of millions (1.5 GB), so it is refused.
+        /// </summary>
+        public const long MaxPathCharacters = 1L << 22;
+
+        /// <summary>
+        /// Refuses, before any path is built, a hierarchy whose transform paths would not fit
+        /// <see cref="MaxPathCharacters"/>: the sum is counted in one pass over the joints (a parent comes before its
+        /// children in a BVH skeleton), so the check costs linear time and no memory per path.
+        /// </summary>
+        private static void RequireBoundedPaths(Skeleton skeleton, string source)
+        {
+            int count = skeleton.JointCount;
+            var length = new long[count];
+            var depth = new int[count];
+            long total = 0;
+            int deepest = 0;
+            for (int j = 0; j < count; j++)
+            {
+                int parent = skeleton.Parents[j];
+                length[j] = parent < 0 ? skeleton.Names[j].Length : length[parent] + 1 + skeleton.Names[j].Length;
+                depth[j] = parent < 0 ? 1 : depth[parent] + 1;
+                deepest = Math.Max(deepest, depth[j]);
+                total += length[j];
+                if (total > MaxPathCharacters)
+                {
+                    throw new DataFormatException(
+                        source,
+                        $"the transform paths of its {count} joints (nested up to {deepest} deep by joint {j}) exceed {MaxPathCharacters} characters",
+                        $"expected a hierarchy whose joint paths hold at most {MaxPathCharacters} characters together (a humanoid's hold a few thousand); flatten the chain or split the file");
+                }
+            }
+        }
+
         /// <summary>Frames per second from a frame time, whole when within 0.01 of a whole number.</summary>
         internal static double FrameRate(double frameTime)
         {
@@ -119,11 +156,20 @@ namespace DeltaInterpolator.Core.BvhImport
         {
             Skeleton skeleton = animation.Skeleton;
             var pieces = new List<FigureBone>();
+            // Each joint's children in one pass (file order): scanning every later joint for each joint was
+            // quadratic (100,000 siblings took 7 s).
+            var children = new List<int>[skeleton.JointCount];
+            for (int c = 1; c < skeleton.JointCount; c++)
+            {
+                int parent = skeleton.Parents[c];
+                if (parent >= 0) (children[parent] ??= new List<int>()).Add(c);
+            }
+
             for (int j = 0; j < skeleton.JointCount; j++)
             {
-                for (int c = j + 1; c < skeleton.JointCount; c++)
+                if (children[j] != null)
                 {
-                    if (skeleton.Parents[c] == j) AddPiece(pieces, j, skeleton.Names[c] + " bone", joints[c].RestPosition, legLength, names);
+                    foreach (int c in children[j]) AddPiece(pieces, j, skeleton.Names[c] + " bone", joints[c].RestPosition, legLength, names);
                 }
 
                 IReadOnlyList<Vector3D> sites = animation.EndSites[j];
