@@ -55,6 +55,10 @@ namespace DeltaInterpolator.Core.BvhImport
             // Stand the prefab on the ground: the file's rest root is often at the origin with the feet below it.
             Vector3D restRoot = rootOffset + new Vector3D(0.0, -lowest, 0.0);
             double legLength = scale * (rootOffset.Y - lowest);
+            if (!FitsFloat(legLength))
+            {
+                throw new DataFormatException(source, $"its rest pose spans {legLength.ToString("R", System.Globalization.CultureInfo.InvariantCulture)} m from the root down", FloatRangeExpected);
+            }
 
             string name = ClipName(source);
             var names = new HashSet<string>(skeleton.Names, StringComparer.Ordinal);
@@ -66,6 +70,12 @@ namespace DeltaInterpolator.Core.BvhImport
                 int parent = skeleton.Parents[j];
                 string path = parent < 0 ? skeleton.Names[j] : joints[parent].Path + "/" + skeleton.Names[j];
                 Vector3D offset = j == 0 ? restRoot : Vector3D.Read(skeleton.OffsetSpan, 3 * j);
+                if (!FitsFloat(scale * offset))
+                {
+                    string what = j == 0 ? "the root's rest position (raised to stand on the ground)" : "OFFSET";
+                    throw new DataFormatException(source, $"joint '{Clip(skeleton.Names[j])}' has {what} {scale * offset} m, beyond float range", FloatRangeExpected);
+                }
+
                 bool positions = j == 0;
                 foreach (BvhChannel c in animation.JointChannels[j]) positions |= !c.IsRotation();
                 joints[j] = new ImportedJoint(
@@ -79,7 +89,7 @@ namespace DeltaInterpolator.Core.BvhImport
 
             FigureBone[] figure = Figure(animation, joints, scale, legLength, names);
             double frameRate = FrameRate(motion.FrameTime);
-            (float[] positionsUnity, float[] rotationsUnity) = Frames(motion, scale);
+            (float[] positionsUnity, float[] rotationsUnity) = Frames(motion, scale, source);
             IReadOnlyList<ClipCurve> curves = Curves(joints, motion.FrameCount, frameRate, positionsUnity, rotationsUnity);
             return new BvhImportResult(source, name, rootName, frameRate, motion.FrameCount, scale, legLength, joints, figure, humanoid, positionsUnity, rotationsUnity, curves);
         }
@@ -119,6 +129,14 @@ namespace DeltaInterpolator.Core.BvhImport
                 }
             }
         }
+
+        private const string FloatRangeExpected = "expected positions within float range (|x| up to 3.4e38 m, what Unity's transforms and curves hold); check the file's OFFSET and position channels, and its unit";
+
+        private static bool FitsFloat(double value) => Math.Abs(value) <= float.MaxValue; // false for NaN and ±Infinity too
+
+        private static bool FitsFloat(Vector3D v) => FitsFloat(v.X) && FitsFloat(v.Y) && FitsFloat(v.Z);
+
+        private static string Clip(string name) => name.Length > 64 ? name.Substring(0, 64) + "…" : name;
 
         /// <summary>Frames per second from a frame time, whole when within 0.01 of a whole number.</summary>
         internal static double FrameRate(double frameTime)
@@ -194,7 +212,7 @@ namespace DeltaInterpolator.Core.BvhImport
         }
 
         /// <summary>Every frame's local positions (metres) and rotations ((x, y, z, w), one hemisphere per joint over time) in Unity space.</summary>
-        private static (float[] Positions, float[] Rotations) Frames(MotionClip motion, double scale)
+        private static (float[] Positions, float[] Rotations) Frames(MotionClip motion, double scale, string source)
         {
             int jointCount = motion.Skeleton.JointCount;
             var positions = new float[motion.FrameCount * jointCount * 3];
@@ -205,6 +223,12 @@ namespace DeltaInterpolator.Core.BvhImport
                 for (int j = 0; j < jointCount; j++)
                 {
                     Vector3D p = Handedness.PositionToUnity(scale * Vector3D.Read(motion.LocalPositions, motion.PositionIndex(f, j)));
+                    if (!FitsFloat(p))
+                    {
+                        // A float key of ±Infinity would put the character nowhere, silently.
+                        throw new DataFormatException(source, $"frame {f}, joint '{Clip(motion.Skeleton.Names[j])}': position {p} m beyond float range", FloatRangeExpected);
+                    }
+
                     int pi = motion.PositionIndex(f, j);
                     positions[pi] = (float)p.X;
                     positions[pi + 1] = (float)p.Y;
