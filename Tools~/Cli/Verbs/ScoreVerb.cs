@@ -89,6 +89,14 @@ namespace DeltaInterpolator.Cli.Verbs
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
             foreach (string m in models) Core.IO.InputFile.Check(m, "an exported model (NAME.onnx)");
             string[] only = parse.GetValue(_only) ?? Array.Empty<string>();
+            foreach (string glob in only)
+            {
+                // Python's fnmatch reads a reversed range as empty (it matches nothing): on the command line that is
+                // a typing slip, said now rather than as "no files".
+                string? reversed = FileGlob.Parse(glob).ReversedRange;
+                if (reversed != null) throw new CliErrors.UsageException($"inbetween score: --only '{glob}' has the reversed range {reversed}, which matches nothing; expected a range from low to high, e.g. [a-z]");
+            }
+
             string? jsonPath = parse.GetValue(_json);
             var entries = new List<DataManifest.Entry>();
             var inputs = new List<string?>(models);
