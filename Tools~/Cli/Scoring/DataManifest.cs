@@ -87,9 +87,8 @@ namespace DeltaInterpolator.Cli.Scoring
         {
             var result = new List<Entry>();
             string root = System.IO.Path.GetFullPath(Folder);
-            // Bounded depth: a symbolic link that loops back into the folder cannot recurse forever.
-            var files = new List<string>(Directory.EnumerateFiles(root, "*", new EnumerationOptions { RecurseSubdirectories = true, MaxRecursionDepth = 16, AttributesToSkip = 0, IgnoreInaccessible = true }));
-            files.Sort(StringComparer.Ordinal);
+            // Each real folder once: a directory link looping back into the folder adds nothing.
+            List<string> files = DataFolderWalk.Files(root);
             string baseDir = Path == null ? root : System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(Path))!;
             foreach (string file in files)
             {
@@ -130,27 +129,8 @@ namespace DeltaInterpolator.Cli.Scoring
             return false;
         }
 
-        /// <summary>Python's fnmatch.fnmatchcase: * and ? match any character ('/' too), [seq] and [!seq] sets.</summary>
-        internal static bool Glob(string pattern, string text)
-        {
-            var rx = new System.Text.StringBuilder("^");
-            for (int i = 0; i < pattern.Length; i++)
-            {
-                char c = pattern[i];
-                if (c == '*') rx.Append(".*");
-                else if (c == '?') rx.Append('.');
-                else if (c == '[' && pattern.IndexOf(']', i + 1) > i + 1)
-                {
-                    int end = pattern.IndexOf(']', i + 2 <= pattern.Length - 1 ? i + 2 : i + 1);
-                    string body = pattern.Substring(i + 1, end - i - 1);
-                    rx.Append('[').Append(body.StartsWith("!", StringComparison.Ordinal) ? "^" + Regex.Escape(body.Substring(1)) : Regex.Escape(body)).Append(']');
-                    i = end;
-                }
-                else rx.Append(Regex.Escape(c.ToString()));
-            }
-
-            return Regex.IsMatch(text, rx.Append('$').ToString(), RegexOptions.Singleline, TimeSpan.FromSeconds(1));
-        }
+        /// <summary>Python's fnmatch.fnmatchcase (<see cref="FileGlob"/>): * and ? match any character ('/' too), [seq] and [!seq] sets.</summary>
+        internal static bool Glob(string pattern, string text) => FileGlob.Parse(pattern).Matches(text);
 
         private static int? Int(Dictionary<string, JsonElement> settings, string key)
             => settings.TryGetValue(key, out JsonElement v) && v.ValueKind == JsonValueKind.Number && v.TryGetInt32(out int i) ? i : (int?)null;

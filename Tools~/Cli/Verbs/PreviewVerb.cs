@@ -138,7 +138,9 @@ namespace DeltaInterpolator.Cli.Verbs
             bool force = parse.GetValue(_output.Force);
             string? mapPath = parse.GetValue(_map);
             if (mapPath != null) InputFile.Check(mapPath, "a JSON joint map");
-            string[] inputs = requests.Select(r => r.Path).Append(mapPath).Where(p => p != null).Select(p => p!).ToArray();
+            // A key list file (--keys @FILE) and a joint map are inputs too: no output replaces them, --force or not.
+            string? keyFile = parse.GetValue(_keys) is string keysText ? KeyListArgument.FilePath(keysText) : null;
+            string[] inputs = requests.Select(r => r.Path).Append(mapPath).Append(keyFile).Where(p => p != null).Select(p => p!).ToArray();
             string htmlPath = parse.GetValue(_out)!;
             OutputFile.Check(htmlPath, force, inputs);
             string? pngPath = parse.GetValue(_png);
