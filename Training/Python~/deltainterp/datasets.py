@@ -41,6 +41,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from .safe_input import check_regular
 MANIFEST_NAME = "inbetween-data.json"
 FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip"}
 REPO_ROOT = Path(__file__).resolve().parents[3]  # Training/Python~/deltainterp/datasets.py
@@ -211,7 +212,6 @@ def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]
 
 
 def _frame_time(path: Path) -> float:
-    from .safe_input import check_regular
     check_regular(path, "a BVH file")  # a named pipe would block the read
     with open(path, "r", encoding="utf-8", errors="replace") as f:
         for i, line in enumerate(f):

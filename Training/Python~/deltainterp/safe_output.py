@@ -9,7 +9,9 @@ interrupted write leaves an existing file byte-identical and never leaves half a
 from __future__ import annotations
 
 import os
+import signal
 import stat
+import threading
 import uuid
 from pathlib import Path
 from typing import BinaryIO, Callable, Iterable, Optional, Union
@@ -113,8 +115,6 @@ def _exit_on_terminate():
     """While a write is under way, SIGTERM and SIGHUP raise SystemExit (143, 129) instead of ending the process
     at once, so the `except` above deletes the temporary file (SIGINT already raises KeyboardInterrupt).
     Only the main thread may set handlers; elsewhere this does nothing. Returns what to restore."""
-    import signal
-    import threading
     if threading.current_thread() is not threading.main_thread():
         return None
     previous = {}
@@ -137,7 +137,6 @@ def _raise_exit(number, frame) -> None:
 
 
 def _restore(previous) -> None:
-    import signal
     for number, handler in (previous or {}).items():
         try:
             signal.signal(number, handler)
