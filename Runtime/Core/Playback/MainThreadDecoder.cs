@@ -48,10 +48,23 @@ namespace DeltaInterpolator.Core.Playback
             set => _framesPerJob = value >= 1 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "expected at least 1");
         }
 
-        /// <summary>Tokens the last <see cref="Pump"/> scheduled.</summary>
+        /// <summary>Tokens the last <see cref="Pump()"/> scheduled.</summary>
         public int LastFrameTokens { get; private set; }
 
         internal BatchScheduler Scheduler => _scheduler;
+
+        /// <summary>
+        /// Stopwatch ticks spent in pumps so far (gathering inputs, running graphs, scattering results): the
+        /// decoder's own work, which the crowd benchmark reports per rendered frame.
+        /// </summary>
+        public long PumpTicks => _scheduler.PumpTicks;
+
+        /// <summary>
+        /// Collects finished runs and schedules new ones within <paramref name="tokenBudget"/> tokens (one frame per
+        /// run), instead of <see cref="TokensPerFrame"/>: a benchmark drains every request at once with
+        /// <see cref="int.MaxValue"/>. Returns the tokens scheduled.
+        /// </summary>
+        public int Pump(int tokenBudget) => _scheduler.Pump(tokenBudget);
 
         /// <inheritdoc />
         public override void Dispose()
