@@ -101,10 +101,15 @@ def _parse_float(text: str) -> _Float:
     return v
 
 
-def _json_text(value) -> str:
-    """The value as the manifest wrote it (its JSON text), cut to 80 characters."""
+def _json_text(value, limit: int = 80) -> str:
+    """The value as the manifest wrote it (its JSON text), clipped as the C# reader clips it (TerminalText.Safe:
+    the first two thirds and the last third of `limit` characters around "…[N characters]…")."""
     text = getattr(value, "text", "") or json.dumps(value, separators=(",", ":"))
-    return text if len(text) <= 80 else text[:77] + "..."
+    if len(text) <= limit:
+        return text
+    head = limit * 2 // 3
+    tail = limit - head
+    return f"{text[:head]}…[{len(text) - head - tail:,} characters]…{text[len(text) - tail:]}"
 
 
 # The rules below are one reader's rules for both languages: `inbetween score` reads manifests with
