@@ -101,6 +101,16 @@ def _parse_float(text: str) -> _Float:
     return v
 
 
+class _NonStandardNumber(ValueError):
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.name = name
+
+
+def _refuse_constant(name: str):
+    raise _NonStandardNumber(name)
+
+
 def _json_text(value, limit: int = 80) -> str:
     """The value as the manifest wrote it (its JSON text), clipped as the C# reader clips it (TerminalText.Safe:
     the first two thirds and the last third of `limit` characters around "…[N characters]…")."""
@@ -130,9 +140,12 @@ def _read_manifest(path: Path) -> Dict:
     except UnicodeDecodeError:
         raise _fail(path, "is not UTF-8 text", "expected a data manifest") from None
     try:
-        data = json.loads(text, parse_int=_parse_int, parse_float=_parse_float)
+        data = json.loads(text, parse_int=_parse_int, parse_float=_parse_float, parse_constant=_refuse_constant)
     except json.JSONDecodeError as e:
         raise ValueError(f"{path}:{e.lineno}: not valid JSON; expected a data manifest") from None
+    except _NonStandardNumber as e:  # NaN, Infinity: Python reads them, JSON (and the C# reader) does not
+        line = text.count("\n", 0, max(text.find(e.name), 0)) + 1
+        raise ValueError(f"{path}:{line}: not valid JSON; expected a data manifest") from None
     except (ValueError, RecursionError):
         raise _fail(path, "is not valid JSON (nested too deeply)", "expected a data manifest") from None
     if not isinstance(data, dict):
