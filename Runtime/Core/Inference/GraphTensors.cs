@@ -24,7 +24,7 @@ namespace DeltaInterpolator.Core.Inference
     /// (a <c>query_features</c> input) are refused by <see cref="ModelChecks"/>, so no tensor is built for it.</para>
     /// <para>Allocates once at creation; nothing afterwards.</para>
     /// </remarks>
-    internal sealed class GraphTensors
+    public sealed class GraphTensors
     {
         private readonly InferenceTensor[] _inputs;
         private readonly InferenceTensor[] _outputs;

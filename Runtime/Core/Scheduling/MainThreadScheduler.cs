@@ -47,7 +47,7 @@ namespace DeltaInterpolator.Core.Scheduling
             set => _framesPerRequest = value >= 1 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "expected at least 1");
         }
 
-        /// <summary>Tokens the last <see cref="Pump"/> scheduled.</summary>
+        /// <summary>Tokens the last <see cref="Pump()"/> scheduled.</summary>
         public int LastFrameTokens { get; private set; }
 
         internal BatchPump Batches => _pump;
@@ -58,6 +58,19 @@ namespace DeltaInterpolator.Core.Scheduling
             get => _pump.Timer;
             set => _pump.Timer = value;
         }
+
+        /// <summary>
+        /// Stopwatch ticks spent in pumps so far (gathering inputs, running graphs, scattering results): the
+        /// decoder's own work, which the crowd benchmark reports per rendered frame.
+        /// </summary>
+        public long PumpTicks => _pump.PumpTicks;
+
+        /// <summary>
+        /// Collects finished runs and schedules new ones within <paramref name="tokenBudget"/> tokens (one frame per
+        /// run), instead of <see cref="TokensPerFrame"/>: a benchmark drains every request at once with
+        /// <see cref="int.MaxValue"/>. Returns the tokens scheduled.
+        /// </summary>
+        public int Pump(int tokenBudget) => _pump.Pump(tokenBudget);
 
         /// <inheritdoc />
         public override void Dispose()

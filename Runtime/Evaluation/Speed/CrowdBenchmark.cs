@@ -80,7 +80,7 @@ namespace DeltaInterpolator.Evaluation.Speed
                 var crowd = new Crowd(decoder, characters);
                 crowd.Warm();
                 crowd.RequestAll();
-                while (!crowd.AllDecoded) decoder.Batches.Pump(int.MaxValue);
+                while (!crowd.AllDecoded) decoder.Pump(int.MaxValue);
                 crowd.PlayFor(1.3);
                 // The main thread's cost of the N requests (keys copied, localized, features and SLERP frames;
                 // no network: that runs on the decoder), measured here where no worker thread shares the core.
@@ -91,7 +91,7 @@ namespace DeltaInterpolator.Evaluation.Speed
                 double first = -1;
                 while (true)
                 {
-                    decoder.Batches.Pump(int.MaxValue);
+                    decoder.Pump(int.MaxValue);
                     bool all = true, any = true;
                     foreach (TransitionPlayer p in crowd.Players)
                     {
@@ -149,11 +149,11 @@ namespace DeltaInterpolator.Evaluation.Speed
                 {
                     for (int k = 0; k < 2; k++)
                     {
-                        long p0 = decoders[k].Batches.PumpTicks;
+                        long p0 = decoders[k].PumpTicks;
                         long t0 = Stopwatch.GetTimestamp();
                         crowds[k].Step();
                         steps[k] += Ms(t0);
-                        pumped[k] += decoders[k].Batches.PumpTicks - p0;
+                        pumped[k] += decoders[k].PumpTicks - p0;
                     }
 
                     frames++;

@@ -15,7 +15,9 @@ from typing import Any, Dict, List, Tuple
 
 import numpy as np
 import torch
+from torch import _weights_only_unpickler, serialization
 
+from . import safe_output
 from .model import DeltaInterpolator, ModelConfig
 from .objective import SkeletonTensors
 from .skeleton import Skeleton
@@ -123,7 +125,6 @@ def save_checkpoint_file(state: Dict[str, Any], path: str | Path) -> Path:
     """Writes `state` (model state dict, step, configs, ...) in format version 2: temporary file beside
     `path`, then rename (safe_output). torch.save into a file object names the zip's records `archive/`,
     so the bytes do not depend on the (random) temporary name."""
-    from . import safe_output
     encoded = encode_checkpoint(state)
     return safe_output.write(path, lambda f: torch.save(encoded, f))
 
@@ -143,7 +144,6 @@ class _RestrictedUnpickler(pickle.Unpickler):
 
 
 def _allowed_globals() -> Dict[str, Any]:
-    from torch import _weights_only_unpickler
     return _weights_only_unpickler._get_allowed_globals()
 
 
@@ -198,7 +198,6 @@ def _torch_load(path: Path) -> Any:
 def _restricted_load(path: Path) -> Any:
     """torch 1.13 only: its torch.load ignores `pickle_module` unless weights_only=True (which cannot read a
     float), so call its zip loader directly with the restricted unpickler."""
-    from torch import serialization
     with serialization._open_zipfile_reader(str(path)) as archive:
         return serialization._load(archive, "cpu", _restricted_pickle_module(), encoding="utf-8")
 
@@ -299,9 +298,6 @@ def _describe_training_data(pack_path, fps: float) -> Tuple[float, str]:
         return fps, "not recorded (the checkpoint names no training pack)"
     if not Path(pack_path).exists():
         return fps, f"not recorded (its training pack {Path(pack_path).name} is not at hand)"
-    import re
-
-    import numpy as np
     with np.load(pack_path, allow_pickle=False) as z:
         files = [str(f) for f in z["files"]]
         if "description" in z.files and str(z["description"]):

@@ -6,11 +6,13 @@ import errno
 import json
 import math
 import os
+import re
 import sys
 from pathlib import Path
 from typing import List, Optional
 
 from . import safe_output
+from .plots import plot_benchmark
 from .terminal_text import LINE_LENGTH, SafeStream, safe
 
 
@@ -68,7 +70,6 @@ def _is_lafan1_folder(args) -> bool:
     folder = Path(args.data[0])
     if not folder.is_dir() or (folder / "inbetween-data.json").exists():
         return False
-    import re
     names = [f.name for f in folder.glob("*.bvh")]
     return bool(names) and all(re.fullmatch(r"[A-Za-z]+\d*_subject\d+\.bvh", n) for n in names)
 
@@ -95,7 +96,7 @@ def _run_prepare(args) -> int:
     safe_output.check(args.out, args.force, _named_inputs(args))
     # ... then statistics the user named (the LaFAN1 default is read only by the LaFAN1 path below).
     if args.stats and args.stats != DEFAULT_STATS:
-        from .benchmark import load_statistics
+        from .lafan1_statistics import load_statistics
         load_statistics(args.stats)
     if _is_lafan1_folder(args):
         from .data import prepare
@@ -461,7 +462,6 @@ def _run_evaluate_export_fixtures(args) -> int:
         print(format_table(report))
         print(f"\nwrote {shown(args.json)}")
         if args.plot:
-            from .plots import plot_benchmark
             print(f"wrote {shown(plot_benchmark(report, args.plot))}")
         return 0
     if args.verb == "export":

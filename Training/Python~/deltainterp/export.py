@@ -27,6 +27,7 @@ from torch import nn
 from . import contract as C, safe_output
 from .checkpoint import LoadedModel
 from .model import DeltaInterpolator
+from .onnx_reference import run_model
 from .operators import check_operators
 
 Tensor = torch.Tensor
@@ -287,7 +288,6 @@ def verify(loaded: LoadedModel, protos: Dict[str, object], tolerance: float = 1e
     """Evaluate every graph with the numpy reference evaluator on several (K, N, n) and compare with
     torch; also whole == keys + frame. A tuple n is a batch of rows with those gap lengths. Returns the largest difference; raises ExportCheckError above
     `tolerance`."""
-    from .onnx_reference import run_model
     model = loaded.model.eval()
     worst = 0.0
     for keys, queries, gap in shapes:

@@ -20,9 +20,11 @@ import torch
 from . import contract as C
 from . import quaternions, safe_output
 from .checkpoint import LoadedModel, load_checkpoint, save_checkpoint_file
+from .export import export_model
 from .kinematics import forward_kinematics
 from .lafan1 import lafan1_skeleton
 from .model import DeltaInterpolator, preset
+from .onnx_reference import run_model
 from .sampler import TransitionSampler
 from .skeleton import Skeleton
 from .transition import run_transition
@@ -173,7 +175,6 @@ def dump_golden(doc: Dict) -> str:
 
 def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-5) -> float:
     """Feed every golden case's inputs to the exported whole graph (numpy evaluator); compare outputs."""
-    from .onnx_reference import run_model
     import onnx
     proto = onnx.load(str(onnx_path))
     worst = 0.0
@@ -195,7 +196,6 @@ def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-
 
 def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -> Dict[str, Path]:
     """tiny-model.pt, tiny-model{,.keys,.frame}.onnx and golden.json in `out_dir`."""
-    from .export import export_model
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise ValueError(f"{out}: is a file, not a folder; expected the fixtures folder (Tests/Fixtures~)")

@@ -20,14 +20,16 @@ import torch
 
 from . import quaternions, safe_output
 from .benchmark import l2q as benchmark_l2q
-from .checkpoint import CheckpointError, read_checkpoint, save_checkpoint_file
+from .checkpoint import CheckpointError, load_checkpoint, read_checkpoint, save_checkpoint_file
 from .data import MotionPack, load_pack, split_windows, training_ranges, windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
 from .localize import unlocalize
 from .objective import (SkeletonTensors, foot_joint_indices, foot_skating, leg_length, loss, make_batch, predict,
                         span_feet)
+from .plots import plot_training
 from .sampler import TransitionSampler
+from .warm_start import load_onnx_weights
 
 
 @dataclass
@@ -226,9 +228,7 @@ VALIDATION_LONG_GAPS = (60,)      # besides 5, 15, 30, when --max-gap reaches th
 def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
     """A warm start: the weights of an exported whole graph (.onnx) or of a checkpoint (.pt)."""
     if str(path).endswith(".onnx"):
-        from .warm_start import load_onnx_weights
         return load_onnx_weights(path, config)
-    from .checkpoint import load_checkpoint
     loaded = load_checkpoint(path)
     if loaded.config.to_dict() != config.to_dict():
         raise ValueError(f"{path}: architecture {loaded.config.to_dict()}; expected {config.to_dict()}")
@@ -659,7 +659,6 @@ def finish(run: TrainingRun) -> None:
     """Plots (rank 0), then the processes meet and leave the process group."""
     if run.rank == 0:
         try:
-            from .plots import plot_training  # matplotlib is optional: loaded only when a run ends
             plot_training(run.out)
         except Exception as e:  # plots are a convenience; never lose a run over them
             print(f"(plots skipped: {e})")

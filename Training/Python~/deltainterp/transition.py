@@ -12,6 +12,7 @@ from typing import Tuple
 import torch
 
 from .checkpoint import LoadedModel
+from .decoding import decode_outputs
 from .localize import unlocalize
 from .objective import TransitionBatch, make_batch, query_deltas
 from .sampler import TransitionSampler
@@ -42,7 +43,6 @@ def request_frames(past_roots: Tensor, past_quats: Tensor, target_root: Tensor, 
 def run_transition(loaded: LoadedModel, past_roots: Tensor, past_quats: Tensor, target_root: Tensor,
                    target_quats: Tensor, gap: int) -> TransitionResult:
     """Geometry runs in the dtype of the inputs (float64 recommended); the network in its own dtype."""
-    from .decoding import decode_outputs
     if gap < 1:
         raise ValueError("a transition needs at least one missing frame")
     past = int(past_roots.shape[1])

@@ -13,6 +13,7 @@ inputs (numpy reference evaluator) and refuses a mismatch.
 from __future__ import annotations
 
 import io
+import json
 import warnings
 from pathlib import Path
 from typing import Dict, Tuple
@@ -21,8 +22,12 @@ import numpy as np
 import torch
 
 from . import contract as C
+from .checkpoint import LoadedModel
+from .export import WholeGraph, _torch_onnx_export, example_inputs, graph_specs
 from .safe_input import InputPathError, load_onnx
 from .model import DeltaInterpolator, ModelConfig
+from .onnx_reference import run_model
+from .skeleton import Skeleton
 
 
 class WarmStartError(ValueError):
@@ -37,7 +42,6 @@ def _probe_mapping(config: ModelConfig, batched: bool = True) -> Dict[Tuple[str,
     real file may stand for several parameters, but every use still names its own."""
     import onnx
     from onnx import numpy_helper
-    from .export import WholeGraph, _torch_onnx_export, example_inputs, graph_specs
 
     model = DeltaInterpolator(config).eval()
     names = [n for n, _ in model.named_parameters()]
@@ -89,8 +93,6 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
     """The state dict of `config`'s network as stored in the whole graph at `path`, checked by running both."""
     import onnx
     from onnx import numpy_helper
-    from .export import WholeGraph, example_inputs
-    from .onnx_reference import run_model
 
     path = Path(path)
     proto = _load(path)
@@ -144,11 +146,7 @@ def _is_batched(proto) -> bool:
 def load_exported_model(path: str | Path):
     """An exported whole graph → a `LoadedModel` (network, skeleton, unit scale, axes from its metadata),
     so `evaluate` can score a shipped `.onnx` through the same torch path as a checkpoint."""
-    import json
-
     import onnx
-    from .checkpoint import LoadedModel
-    from .skeleton import Skeleton
 
     path = Path(path)
     proto = _load(path)
