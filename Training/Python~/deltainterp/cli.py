@@ -77,7 +77,6 @@ def _is_lafan1_folder(args) -> bool:
 def _export_name(given, checkpoint: str, exported: str) -> str:
     """The exported model's name: --name, else an exported model's own, else after the run (its folder);
     never a data set's it was not trained on (the default was once DeltaInterpolator-LaFAN1 for any run)."""
-    import re
     if given is not None:
         if not given.strip() or len(given) > 100 or any(ord(c) < 32 or ord(c) == 127 for c in given):
             raise ValueError(f"--name {given[:40]!r}; expected a model name of 1 to 100 printable characters")
