@@ -118,6 +118,8 @@ namespace DeltaInterpolator.Core.Inference
             {
                 DecodeFrame(transition, w, k, k);
             }
+
+            CopyContacts(transition, w.Tensors.FootContacts, 0, 0, transition.MissingFrames);
         }
 
         /// <summary>
@@ -274,6 +276,20 @@ namespace DeltaInterpolator.Core.Inference
             }
         }
 
+        /// <summary>
+        /// Hands the predicted contacts of <paramref name="count"/> decoded rows (from <paramref name="row"/> of
+        /// <paramref name="contacts"/>) to missing frames <paramref name="k"/>.. of the transition, or marks the
+        /// transition as without predictions when the model has none (its lockers then label contacts themselves).
+        /// </summary>
+        internal void CopyContacts(Transition t, InferenceTensor? contacts, int row, int k, int count)
+        {
+            t.ContactThreshold = Contract.ContactThreshold;
+            t.HasFootContacts = contacts != null;
+            if (contacts == null) return;
+            const int C = ModelContract.ContactChannelCount;
+            Array.Copy(contacts.Floats!, row * C, t.FootContacts, k * C, count * C);
+        }
+
         private void DecodeFrame(Transition t, Workspace w, int row, int k)
         {
             Decode(t, w.Localization, w.LocalRoot, w.Pairs, w.Tensors.RootPositionDelta!.Floats!, w.Tensors.Rotation6DDelta!.Floats!, row, k);
@@ -326,6 +342,12 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             contract.CheckConstants(tensors.ContractVersion!.Longs![0], tensors.JointCount!.Longs![0], tensors.KeyFeatureSize!.Longs![0]);
+            if (tensors.FootContacts != null)
+            {
+                var report = new ModelCheckReport();
+                ModelChecks.ContactProbabilities(contract, tensors.FootContacts.Floats, report);
+                report.ThrowIfErrors();
+            }
         }
 
         private void ThrowIfDisposed()
