@@ -82,7 +82,8 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>
         /// Decodes missing frame <paramref name="k"/> (0-based, 0..n−1) into the transition's
-        /// <see cref="Transition.RootPositions"/> and <see cref="Transition.LocalRotations"/> at k.
+        /// <see cref="Transition.RootPositions"/> and <see cref="Transition.LocalRotations"/> at k (and its
+        /// <see cref="Transition.FootContacts"/> when the model predicts them).
         /// </summary>
         /// <exception cref="InvalidOperationException"><see cref="Begin"/> was not called.</exception>
         public void DecodeFrame(int k)
@@ -92,6 +93,7 @@ namespace DeltaInterpolator.Core.Inference
             _frame.SetQuery(k);
             _frameBinding.Run();
             _owner.Decode(t, _localization, _localRoot, _pairs, _frame.RootPositionDelta!.Floats!, _frame.Rotation6DDelta!.Floats!, 0, k);
+            _owner.CopyContacts(t, _frame.FootContacts, 0, k, 1);
         }
 
         internal void DisposeBindings()
