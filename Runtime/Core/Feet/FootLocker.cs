@@ -146,6 +146,14 @@ namespace DeltaInterpolator.Core.Feet
             return _ground[channel * _capacity + frame];
         }
 
+        /// <summary>After planning: where foot joint <paramref name="channel"/> is held on <paramref name="frame"/> (meaningful where <see cref="LockWeight"/> is above 0).</summary>
+        internal Vector3D HeldAt(int frame, int channel)
+        {
+            if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
+            if ((uint)channel >= ChannelCount) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
+            return Vector3D.Read(_anchor, (channel * _capacity + frame) * 3);
+        }
+
         /// <summary>After <see cref="Plan(MotionClip, IReadOnlyList{int})"/>: foot joint <paramref name="channel"/>'s planted height above the ground (clip units).</summary>
         public double PlantedHeight(int channel) => _plantedHeight[channel];
 

@@ -281,13 +281,16 @@ namespace DeltaInterpolator.Core.Inference
         /// <paramref name="contacts"/>) to missing frames <paramref name="k"/>.. of the transition, or marks the
         /// transition as without predictions when the model has none (its lockers then label contacts themselves).
         /// </summary>
-        internal void CopyContacts(Transition t, InferenceTensor? contacts, int row, int k, int count)
+        internal void CopyContacts(Transition t, InferenceTensor? contacts, int row, int k, int count) => CopyContacts(t, contacts?.Floats, row, k, count);
+
+        /// <summary>As above, from the contacts tensor's array (rows × 4; null when the model has none).</summary>
+        internal void CopyContacts(Transition t, float[]? contacts, int row, int k, int count)
         {
             t.ContactThreshold = Contract.ContactThreshold;
             t.HasFootContacts = contacts != null;
             if (contacts == null) return;
             const int C = ModelContract.ContactChannelCount;
-            Array.Copy(contacts.Floats!, row * C, t.FootContacts, k * C, count * C);
+            Array.Copy(contacts, row * C, t.FootContacts, k * C, count * C);
         }
 
         private void DecodeFrame(Transition t, Workspace w, int row, int k)

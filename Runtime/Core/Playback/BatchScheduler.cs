@@ -454,24 +454,26 @@ namespace DeltaInterpolator.Core.Playback
             GraphTensors tensors = group.Frame!;
             float[] root = tensors.RootPositionDelta!.Floats!;
             float[] rotation = tensors.Rotation6DDelta!.Floats!;
+            float[]? contacts = tensors.FootContacts?.Floats;
             for (int r = 0; r < rows; r++)
             {
                 TransitionJob job = group.FrameJobs[r]!;
                 group.FrameJobs[r] = null;
                 job.InFlight = false;
                 if (job.Cancelled) continue;
-                DecodeRow(job, root, rotation, r, group.FrameIndex[r]);
+                DecodeRow(job, root, rotation, contacts, r, group.FrameIndex[r]);
             }
         }
 
         /// <summary>Decodes and publishes row <paramref name="r"/>'s frames from <paramref name="from"/> on (those within its gap).</summary>
-        private void DecodeRow(TransitionJob job, float[] root, float[] rotation, int r, int from)
+        private void DecodeRow(TransitionJob job, float[] root, float[] rotation, float[]? contacts, int r, int from)
         {
             Transition t = job.Transition;
             int per = FramesPerRun;
             for (int q = 0; q < per && from + q < t.MissingFrames; q++)
             {
                 _inbetweener.Decode(t, job.Localization, job.LocalRoot, job.Pairs, root, rotation, r * per + q, from + q);
+                _inbetweener.CopyContacts(t, contacts, r * per + q, from + q, 1);
                 job.Publish(from + q + 1);
             }
         }
@@ -681,6 +683,7 @@ namespace DeltaInterpolator.Core.Playback
         {
             float[] root = run.Frame.RootPositionDelta!.Floats!;
             float[] rotation = run.Frame.Rotation6DDelta!.Floats!;
+            float[]? contacts = run.Frame.FootContacts?.Floats;
             for (int r = 0; r < run.Rows; r++)
             {
                 int from = run.FrameIndex[r];
@@ -689,7 +692,7 @@ namespace DeltaInterpolator.Core.Playback
                 TransitionJob job = run.Jobs[r]!;
                 job.InFlight = false;
                 if (job.Cancelled) continue;
-                DecodeRow(job, root, rotation, r, from);
+                DecodeRow(job, root, rotation, contacts, r, from);
             }
         }
 

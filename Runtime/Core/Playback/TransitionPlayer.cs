@@ -456,7 +456,7 @@ namespace DeltaInterpolator.Core.Playback
 
             if (_ease.Show(job, a, f, decoded >= need)) HeldFrames++;
             // Feet after the SLERP → network ease-in, on the pose about to be shown (model space).
-            _feet?.LockPose(time, _ease.Root, _ease.Rotations);
+            _feet?.LockPose(time, _ease.Root, _ease.Rotations, job.ContactsOf(a + (f < 0.5 ? 0 : 1)), job.Transition.ContactThreshold);
             _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
             double blendIn = Math.Min(_settings.BlendInSeconds, _duration);
             double w = blendIn > 0 ? SmoothStep(Math.Max(0, s) / blendIn) : 1;

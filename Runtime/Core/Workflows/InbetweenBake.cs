@@ -84,7 +84,7 @@ namespace DeltaInterpolator.Core.Workflows
                 }
 
                 modelLockers[i]?.Lock(baked, Relative(modelKeys), bakers[i].Contacts);
-                results[i] = new MethodBake(methods[i], plans[i], baked, onRig, seconds);
+                results[i] = new MethodBake(methods[i], plans[i], baked, onRig, seconds, bakers[i].Contacts);
             }
 
             return new BakeRun(rig, onModel, (int[])rigKeys.Clone(), modelKeys, results);

@@ -96,10 +96,17 @@ namespace DeltaInterpolator.Tests.Cli
         {
             string json = Path.Combine(_dir, "contacts.json");
             CliRun run = CliHarness.Run("bake", Sample, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--model", Path.Combine(Root, "Tests", "Fixtures~", "tiny-model-contacts.onnx"),
-                "--out", Path.Combine(_dir, "c.bvh"), "--json", json);
+                "--out", Path.Combine(_dir, "c.bvh"), "--json", json, "--preview", Path.Combine(_dir, "c.html"));
             CliHarness.AssertSuccess(run);
             using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(json));
             Assert.That(doc.RootElement.GetProperty("model_contacts").GetString(), Is.EqualTo("predicted"));
+            Assert.That(run.Stdout.Replace("\n", " ").Replace("  ", " "), Does.Contain("the model's footprints are the contacts it predicted"), "the preview marks the predicted contacts");
+            CliRun plain = CliHarness.Run("bake", Sample, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--model", Path.Combine(Root, "Tests", "Fixtures~", "tiny-model.onnx"),
+                "--out", Path.Combine(_dir, "p.bvh"), "--json", Path.Combine(_dir, "p.json"), "--preview", Path.Combine(_dir, "p.html"));
+            CliHarness.AssertSuccess(plain);
+            using JsonDocument plainDoc = JsonDocument.Parse(File.ReadAllText(Path.Combine(_dir, "p.json")));
+            Assert.That(plainDoc.RootElement.GetProperty("model_contacts").GetString(), Is.EqualTo("labelled"));
+            Assert.That(plain.Stdout.Replace("\n", " ").Replace("  ", " "), Does.Not.Contain("contacts it predicted"));
         }
 
         [Test]

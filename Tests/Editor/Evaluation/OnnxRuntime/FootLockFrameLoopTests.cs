@@ -66,6 +66,36 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 locked frames");
         }
 
+        /// <summary>
+        /// Issue 29 on the batched decode path (<see cref="MainThreadDecoder"/>): a model with a contact output hands each
+        /// decoded frame's contacts to the component's locker, which plants feet by them, with 0 bytes per frame; a model
+        /// without one leaves the locker labelling them.
+        /// </summary>
+        [TestCase("tiny-model-contacts.onnx", true)]
+        [TestCase("tiny-model.onnx", false)]
+        public void TheComponentsLockerTakesEachDecodedFramesPredictedContacts(string fixture, bool predicts)
+        {
+            BvhAnimation walk = LoadWalk();
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(Path.Combine(Fixtures.Directory, fixture), requireLazy: true);
+            var loop = new WalkLoop(walk, model, 60, lockFeet: true);
+            loop.PlayUntil(RequestTimes[0]);
+            loop.Request(1.0);
+            Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
+            loop.Step();
+            int predicted = 0;
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 40; i++)
+            {
+                loop.Step();
+                if (loop.Player.Feet!.LastPosePredicted) predicted++;
+            }
+
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(loop.Player.IsPlaying, Is.True);
+            Assert.That(predicted, Is.EqualTo(predicts ? 40 : 0), "frames locked with the model's predicted contacts");
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 locked frames");
+        }
+
         /// <summary>Mean skating (leg lengths/s) over the walk's planted samples of every transition's frames, their count, and the lowest shown foot joint (leg lengths above the walk's ground).</summary>
         private static (double Speed, int Samples, double Lowest) Skating(BvhAnimation walk, Inbetweener model, double fps, double seconds, bool lockFeet)
         {
