@@ -287,6 +287,9 @@ def _contacts(sub) -> None:
     p.add_argument("--no-mirror", action="store_true", help="no left-right mirrored batches")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--checkpoint-every", type=int, default=250)
+    p.add_argument("--validate-every", type=int, default=0,
+                   help="also choose and log the threshold on validation every N steps (0: only at the end)")
+    p.add_argument("--decay-at", type=float, default=0.8, help="the learning rate drops x0.1 after this share of the steps")
     p.add_argument("--max-minutes", type=float, default=0.0, help="stop with a checkpoint after M minutes (0: no limit)")
     p.add_argument("--every", type=int, nargs="+", default=[15, 30],
                    help="key spacings (model frames) the threshold is chosen for (default 15 30)")
@@ -325,6 +328,7 @@ def _run_contacts(args) -> int:
                                    hidden=args.hidden, steps=args.steps, batch_size=args.batch_size, lr=args.lr,
                                    chained_share=args.chained_share, mirror=not args.no_mirror, seed=args.seed,
                                    checkpoint_every=args.checkpoint_every, max_minutes=args.max_minutes,
+                                   validate_every=args.validate_every, decay_at=args.decay_at,
                                    every=tuple(args.every))
         print(f"checkpoint: {K.train_contact_head(cfg)}")
         return 0

@@ -242,6 +242,8 @@ class ContactTrainConfig:
     mirror: bool = True
     seed: int = 0
     checkpoint_every: int = 250
+    validate_every: int = 0             # 0: only at the end; else also every N steps (chained bakes: slow)
+    decay_at: float = 0.8               # the learning rate drops ×0.1 after this share of the steps
     max_minutes: float = 0.0
     every: Tuple[int, ...] = (15, 30)   # key spacings the threshold is chosen for (validation)
 
@@ -261,6 +263,10 @@ class ContactTrainConfig:
             raise ValueError(f"--chained-share {self.chained_share}; expected a share from 0 to 1")
         if not 1 <= self.checkpoint_every <= 10_000_000:
             raise ValueError(f"--checkpoint-every {self.checkpoint_every}; expected ≥ 1")
+        if not 0 <= self.validate_every <= 10_000_000:
+            raise ValueError(f"--validate-every {self.validate_every}; expected ≥ 0 (0: only at the end)")
+        if not (math.isfinite(self.decay_at) and 0 < self.decay_at <= 1):
+            raise ValueError(f"--decay-at {self.decay_at}; expected a share of the steps in (0, 1]")
         if not (math.isfinite(self.max_minutes) and self.max_minutes >= 0):
             raise ValueError(f"--max-minutes {self.max_minutes}; expected ≥ 0 (0: no limit)")
         if not self.every or any(not 2 <= k <= 200 for k in self.every):
@@ -268,7 +274,7 @@ class ContactTrainConfig:
 
 
 # What a resumed run must share with the run it continues (else it is another experiment).
-RESUME_SETTINGS = ("head", "hidden", "batch_size", "lr", "chained_share", "mirror", "seed", "init_from")
+RESUME_SETTINGS = ("head", "hidden", "batch_size", "lr", "chained_share", "mirror", "seed", "init_from", "decay_at")
 
 
 def initial_model(path: str, head: str, hidden: int) -> LoadedModel:
@@ -362,7 +368,23 @@ def train_contact_head(cfg: ContactTrainConfig, progress: bool = True) -> Path:
         }, ckpt_path)
 
     model.eval()  # the trunk's dropout stays off: the head learns the tokens the exported graphs give
+    def validate() -> Tuple[float, Dict]:
+        counts = contact_scores(loaded, pack, cfg.every, "validation")
+        threshold, worst = choose_threshold(counts)
+        i = THRESHOLDS.index(threshold)
+        scores = {f"every_{k}_{j}_{m}": float(getattr(c, m)()[i, n])
+                  for k, c in counts.items() for n, j in enumerate(C.CONTACT_JOINTS) for m in ("precision", "recall")}
+        scores["contact_threshold_worst"] = worst
+        safe_output.append_text(out / "validation.jsonl", json.dumps({"step": step, "threshold": threshold, **scores}) + "\n")
+        if progress:
+            print(f"step {step}: threshold {threshold} (worst precision or recall {worst:.3f}) on validation:")
+            for line in format_scores(counts, threshold):
+                print("  " + line, flush=True)
+        return threshold, scores
+
     while step < cfg.steps:
+        for group in optimizer.param_groups:
+            group["lr"] = cfg.lr * (0.1 if step >= cfg.decay_at * cfg.steps else 1.0)
         layout = sampler.sample(rng)
         n, p = layout.gap, layout.past
         chained = cfg.chained_share > 0 and rng.random() < cfg.chained_share
@@ -418,18 +440,11 @@ def train_contact_head(cfg: ContactTrainConfig, progress: bool = True) -> Path:
             if progress:
                 print(f"stopping at step {step}: --max-minutes {cfg.max_minutes} reached (resume to continue)")
             return ckpt_path
+        if cfg.validate_every and step % cfg.validate_every == 0 and step < cfg.steps:
+            validate()
     # the threshold: chosen on the validation tails' chained bakes (never on held-out subjects)
-    counts = contact_scores(loaded, pack, cfg.every, "validation")
-    threshold, worst = choose_threshold(counts)
-    validation = {f"every_{k}_{j}_{m}": float(getattr(c, m)()[THRESHOLDS.index(threshold), n])
-                  for k, c in counts.items() for n, j in enumerate(C.CONTACT_JOINTS) for m in ("precision", "recall")}
-    validation["contact_threshold_worst"] = worst
+    threshold, validation = validate()
     save(threshold, validation)
-    safe_output.append_text(out / "validation.jsonl", json.dumps({"step": step, "threshold": threshold, **validation}) + "\n")
-    if progress:
-        print(f"threshold {threshold} (worst precision or recall {worst:.3f}) on validation:")
-        for line in format_scores(counts, threshold):
-            print("  " + line)
     return ckpt_path
 
 

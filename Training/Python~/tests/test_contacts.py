@@ -220,6 +220,7 @@ def test_a_checkpoint_with_a_bad_threshold_is_refused(tmp_path):
     ("--head", "cubic"), ("--head", "none"), ("--hidden", "0"), ("--steps", "0"), ("--batch-size", "0"),
     ("--lr", "0"), ("--lr", "nan"), ("--chained-share", "1.5"), ("--chained-share", "nan"),
     ("--checkpoint-every", "0"), ("--max-minutes", "-1"), ("--max-minutes", "inf"), ("--every", "1"),
+    ("--validate-every", "-1"), ("--decay-at", "0"), ("--decay-at", "nan"),
 ])
 def test_train_contacts_refuses_bad_options(tmp_path, synthetic_pack_path, option, value):
     r = _cli("train-contacts", "--data", str(synthetic_pack_path), "--init-from", str(FIXTURES / "tiny-model.pt"),
