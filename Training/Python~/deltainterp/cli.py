@@ -315,6 +315,9 @@ def _contacts(sub) -> None:
     p.add_argument("--threshold", type=float, help="planted where p ≥ this (default: the model's own)")
     p.add_argument("--json", help="also write the counts and scores here")
     p.add_argument("--force", action="store_true", help="replace an existing --json file")
+    p.add_argument("--same-motion-as", metavar="OTHER.onnx",
+                   help="first print the largest difference between --model's motion outputs (whole, keys and frame "
+                        "graphs) and OTHER's on the same inputs: a contact head on a frozen trunk gives ~0")
 
 
 def _run_contacts(args) -> int:
@@ -345,6 +348,12 @@ def _run_contacts(args) -> int:
     if not loaded.model.has_contacts:
         raise ValueError(f"{args.model}: has no foot_contacts output; expected a model with a contact head "
                          "(`train-contacts`, contract version 3)")
+    if args.same_motion_as:
+        if not (args.model.endswith(".onnx") and args.same_motion_as.endswith(".onnx")):
+            raise ValueError(f"--same-motion-as {args.same_motion_as}: compares two exported models; expected --model "
+                             "and OTHER to be .onnx files")
+        for what, d in K.motion_difference(args.model, args.same_motion_as).items():
+            print(f"  {what}: max |{args.model} - {args.same_motion_as}| = {d:.3g}")
     pack = load_pack(args.data)
     if list(pack.skeleton.names) != list(loaded.skeleton.names):
         raise ValueError(f"{args.data}: its skeleton is not the model's; expected a pack prepared for {args.model}")

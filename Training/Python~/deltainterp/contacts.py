@@ -227,6 +227,39 @@ def format_scores(counts: Dict[int, ContactCounts], threshold: float, thresholds
     return lines
 
 
+def motion_difference(model_path, other_path) -> Dict[str, float]:
+    """Largest |difference| between two exported models' motion outputs on the same inputs (several K, N and
+    batches of rows with different gaps), graph by graph: the whole graph's `root_position_delta` and
+    `rotation_6d_delta`, the keys graph's `key_memory`, and the frame graph's deltas fed each file's own keys
+    output. A contact head on a frozen trunk must give 0 up to float rounding in every one."""
+    from .export import example_inputs, graph_paths
+    from .onnx_reference import run_model
+    from .safe_input import load_onnx
+    from .warm_start import load_exported_model
+    model = load_exported_model(model_path).model
+    graphs = {}
+    for name, path in (("model", model_path), ("other", other_path)):
+        graphs[name] = {k: load_onnx(p) for k, p in graph_paths(path).items()}
+    worst: Dict[str, float] = {}
+    motion = (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA)
+    for keys, queries, gaps in ((11, 5, [5]), (11, 14, [14, 29, 20]), (11, 29, [29, 29]), (3, 1, [7, 1])):
+        feeds = {k: v.numpy() for k, v in example_inputs(model, "whole", keys, queries, gaps, seed=keys + queries).items()}
+        key_feeds = {k: feeds[k] for k in (C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.GAP_LENGTH)}
+        got = {}
+        for name, g in graphs.items():
+            memory = run_model(g["keys"], key_feeds)[C.KEY_MEMORY]
+            frame = run_model(g["frame"], {C.KEY_MEMORY: memory, C.QUERY_FRAME_INDICES: feeds[C.QUERY_FRAME_INDICES],
+                                           C.GAP_LENGTH: feeds[C.GAP_LENGTH]})
+            got[name] = (run_model(g["whole"], feeds), memory, frame)
+        pairs = [(f"whole {o}", got["model"][0][o], got["other"][0][o]) for o in motion]
+        pairs.append(("keys key_memory", got["model"][1], got["other"][1]))
+        pairs += [(f"frame {o}", got["model"][2][o], got["other"][2][o]) for o in motion]
+        for what, a, b in pairs:
+            d = float(np.abs(a - b).max())
+            worst[what] = max(worst.get(what, 0.0), d if math.isfinite(d) else math.inf)
+    return worst
+
+
 # -- training the head -------------------------------------------------------------------------------------
 @dataclass
 class ContactTrainConfig:

@@ -250,3 +250,18 @@ def test_contacts_prints_precision_and_recall(synthetic_pack_path, tmp_path):
     assert "planted where p >= 0.4" in r.stdout and "LeftToe P" in r.stdout
     report = json.loads((tmp_path / "c.json").read_text())
     assert report["threshold"] == 0.4 and set(report["every"]["15"]) >= set(C.CONTACT_JOINTS)
+
+
+def test_motion_difference_is_zero_for_the_same_trunk_and_sees_a_changed_one(tmp_path):
+    same = K.motion_difference(FIXTURES / "tiny-model-contacts.onnx", FIXTURES / "tiny-model.onnx")
+    assert set(same) >= {"whole root_position_delta", "keys key_memory", "frame rotation_6d_delta"}
+    assert max(same.values()) <= 1e-6
+    # the same files with one motion weight nudged: the whole and frame graphs differ, the keys graph not
+    for suffix in ("", ".keys", ".frame"):
+        proto = onnx.load(str(FIXTURES / f"tiny-model{suffix}.onnx"))
+        for init in proto.graph.initializer:
+            if list(init.dims) == [3] and init.data_type == onnx.TensorProto.FLOAT:  # the root head's bias
+                init.CopyFrom(onnx.numpy_helper.from_array(onnx.numpy_helper.to_array(init) + 0.01, init.name))
+        (tmp_path / f"nudged{suffix}.onnx").write_bytes(proto.SerializeToString())
+    moved = K.motion_difference(FIXTURES / "tiny-model-contacts.onnx", tmp_path / "nudged.onnx")
+    assert moved["whole root_position_delta"] > 0.005 and moved["frame root_position_delta"] > 0.005
