@@ -265,3 +265,16 @@ def test_motion_difference_is_zero_for_the_same_trunk_and_sees_a_changed_one(tmp
         (tmp_path / f"nudged{suffix}.onnx").write_bytes(proto.SerializeToString())
     moved = K.motion_difference(FIXTURES / "tiny-model-contacts.onnx", tmp_path / "nudged.onnx")
     assert moved["whole root_position_delta"] > 0.005 and moved["frame root_position_delta"] > 0.005
+
+
+def test_a_block_head_exports_reads_back_and_leaves_the_motion(tmp_path, synthetic_pack_path):
+    out = tmp_path / "run"
+    K.train_contact_head(K.ContactTrainConfig(data=str(synthetic_pack_path), out=str(out), head="block", hidden=8,
+                                              init_from=str(FIXTURES / "tiny-model.pt"), steps=5, batch_size=4,
+                                              every=(15,)), progress=False)
+    loaded = load_checkpoint(out / "checkpoint.pt")
+    assert loaded.config.contact_head == "block"
+    report = export_model(loaded, tmp_path / "b.onnx", name="block-test")  # whole == keys + frame, checked
+    back = load_exported_model(report.paths["whole"])
+    assert back.config.contact_head == "block" and back.config.contact_hidden == 8
+    assert max(K.motion_difference(report.paths["whole"], FIXTURES / "tiny-model.onnx").values()) <= 1e-6
