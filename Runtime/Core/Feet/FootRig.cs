@@ -100,7 +100,7 @@ namespace DeltaInterpolator.Core.Feet
             Leg left = ModelLeg(skeleton, "Left"), right = ModelLeg(skeleton, "Right");
             var all = new int[skeleton.JointCount];
             for (int j = 0; j < all.Length; j++) all[j] = j;
-            return new FootRig(skeleton, left, right, SkeletonMap.LegLength(ReferencePose.ModelTPose(skeleton), all, 0));
+            return new FootRig(skeleton, left, right, LegLengths.Measure(ReferencePose.ModelTPose(skeleton), all, 0));
         }
 
         /// <summary>True when <paramref name="skeleton"/> has the model's leg joints (LaFAN1 names), so <see cref="ForModel"/> succeeds.</summary>

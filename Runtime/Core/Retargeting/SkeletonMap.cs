@@ -57,9 +57,11 @@ namespace DeltaInterpolator.Core.Retargeting
 
         private readonly bool[] _synthesized;     // target joint → true when the source lacks it (rigid child of its parent)
 
-        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, int[] sourceOf, int[] sourceFirst, int[][] carried, bool[] synthesized, double? rootScale, string sourceName)
+        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, MapChains chains, double? rootScale, string sourceName)
         {
             SourceReference = source;
+            int[] sourceOf = chains.SourceOf, sourceFirst = chains.SourceFirst;
+            bool[] synthesized = chains.Synthesized;
             _synthesized = synthesized;
             var made = new List<string>();
             for (int j = 0; j < synthesized.Length; j++) if (synthesized[j]) made.Add(target.Skeleton.Names[j]);
@@ -67,33 +69,14 @@ namespace DeltaInterpolator.Core.Retargeting
             Map = map;
             _sourceOf = sourceOf;
             _sourceFirst = sourceFirst;
-            _carried = carried;
+            _carried = chains.Carried;
             Skeleton ts = target.Skeleton, ss = source.Skeleton;
             int jt = ts.JointCount;
 
             // 1. Align the target's declared reference to the source's.
-            var align = new QuaternionD[jt];
             var declared = new QuaternionD[jt];
             for (int j = 0; j < jt; j++) declared[j] = target.GlobalRotation(j);
-            align[0] = RootYaw(source, target, sourceOf, sourceFirst);
-            double sourceEps = 1e-6 * LongestBone(source), targetEps = 1e-6 * LongestBone(target);
-            var children = new List<int>[jt];
-            for (int j = 0; j < jt; j++) children[j] = new List<int>();
-            for (int j = 1; j < jt; j++) children[ts.Parents[j]].Add(j);
-            var aligned = new bool[jt];
-            for (int j = 1; j < jt; j++)
-            {
-                QuaternionD inherited = align[ts.Parents[j]];
-                align[j] = inherited;
-                if (children[j].Count != 1) continue;
-                int c = children[j][0];
-                Vector3D a = target.GlobalPosition(c) - target.GlobalPosition(j);
-                Vector3D b = source.GlobalPosition(sourceFirst[c]) - source.GlobalPosition(sourceOf[j]);
-                if (a.Length <= targetEps || b.Length <= sourceEps) continue;
-                Vector3D from = Quaternions.Apply(inherited, a);
-                align[j] = Quaternions.Normalize(Quaternions.Multiply(Quaternions.Between(from, b, Vector3D.UnitY), inherited));
-                aligned[j] = true;
-            }
+            QuaternionD[] align = ReferenceAlignment.Align(source, target, sourceOf, sourceFirst, out bool[] aligned);
 
             var targetLocal = new double[4 * jt];
             var global = new QuaternionD[jt];
@@ -113,12 +96,12 @@ namespace DeltaInterpolator.Core.Retargeting
             // 2. Root scale from the leg lengths of the two reference poses.
             var sourceMeasured = new List<int>();
             for (int j = 0; j < jt; j++) if (!synthesized[j]) sourceMeasured.Add(sourceFirst[j]);
-            SourceLegLength = LegLength(source, sourceMeasured.ToArray(), sourceOf[0]);
+            SourceLegLength = LegLengths.Measure(source, sourceMeasured.ToArray(), sourceOf[0]);
             // Like with like: the target is measured down to its lowest joint that the source has too (a rig
             // without toes is measured to the ankles on both sides).
             var measured = new List<int>();
             for (int j = 0; j < jt; j++) if (!synthesized[j]) measured.Add(j);
-            TargetLegLength = LegLength(TargetReference, measured.ToArray(), 0);
+            TargetLegLength = LegLengths.Measure(TargetReference, measured.ToArray(), 0);
             if (rootScale == null && (!(SourceLegLength > 0) || !(TargetLegLength > 0)))
             {
                 // Named by the file whose pose it is (the map's name alone would hide which input is at fault).
@@ -215,98 +198,8 @@ namespace DeltaInterpolator.Core.Retargeting
             sourceName ??= "<source>";
             Skeleton ss = source.Skeleton, ts = target.Skeleton;
             map ??= JointMap.Detect(ss, ts);
-            int jt = ts.JointCount;
-            var chains = new int[jt][];
-            var synthesized = new bool[jt];
-            var missing = new List<string>();
-            var missingNames = new List<string>();
-            for (int j = 0; j < jt; j++)
-            {
-                IReadOnlyList<string>? chain = map.SourceChain(ts.Names[j]);
-                int[]? found = chain == null ? null : JointMap.FindChain(ss, chain);
-                if (found == null)
-                {
-                    // A joint the rig lacks: a rigid child of its parent (never the root, never below a missing joint).
-                    if (j > 0 && map.MayLack(ts.Names[j]) && (chains[ts.Parents[j]] != null || synthesized[ts.Parents[j]]))
-                    {
-                        synthesized[j] = true;
-                        continue;
-                    }
-
-                    missing.Add(chain == null ? ts.Names[j] : ts.Names[j] + " (" + string.Join("+", chain) + ")");
-                    missingNames.Add(ts.Names[j]);
-                    continue;
-                }
-
-                chains[j] = found;
-            }
-
-            if (missing.Count > 0)
-            {
-                var names = missingNames;
-                throw new JointMapException(sourceName,
-                    $"the skeleton has no joint for {missing.Count} of the target's {jt} joints: {string.Join(", ", missing)} (joint map '{map.Name}')",
-                    "expected joints named as in LaFAN1, CMU, Mixamo or Unity HumanBodyBones; pass a JSON joint map (--map) naming the source joint of each",
-                    names);
-            }
-
-            var owner = new int[ss.JointCount];
-            for (int s = 0; s < owner.Length; s++) owner[s] = -1;
-            var sourceOf = new int[jt];
-            var sourceFirst = new int[jt];
-            var carried = new int[jt][];
-            for (int j = 0; j < jt; j++)
-            {
-                if (synthesized[j])
-                {
-                    // Turns rigidly with its parent: the same source joint, so its local rotation is the reference's.
-                    sourceOf[j] = sourceOf[ts.Parents[j]];
-                    sourceFirst[j] = sourceOf[j];
-                    carried[j] = Array.Empty<int>();
-                    continue;
-                }
-
-                int[] chain = chains[j];
-                for (int i = 0; i < chain.Length; i++)
-                {
-                    int s = chain[i];
-                    if (owner[s] >= 0)
-                    {
-                        throw new JointMapException(sourceName, $"source joint '{ss.Names[s]}' is mapped to both '{ts.Names[owner[s]]}' and '{ts.Names[j]}'",
-                            "expected each source joint in at most one target joint's chain; fix the joint map");
-                    }
-
-                    owner[s] = j;
-                    if (i > 0 && ss.Parents[s] != chain[i - 1])
-                    {
-                        throw new JointMapException(sourceName, $"the chain of '{ts.Names[j]}' lists '{ss.Names[s]}' after '{ss.Names[chain[i - 1]]}', which is not its parent",
-                            "expected a chain of source joints, each the child of the one before");
-                    }
-                }
-
-                sourceOf[j] = chain[chain.Length - 1];
-                sourceFirst[j] = chain[0];
-                int stop = j == 0 ? -1 : sourceOf[ts.Parents[j]];
-                var path = new List<int>();
-                int walk = ss.Parents[sourceOf[j]];
-                while (walk != stop)
-                {
-                    if (walk < 0)
-                    {
-                        throw new JointMapException(sourceName,
-                            $"'{ts.Names[j]}' maps to '{ss.Names[sourceOf[j]]}', which is not below '{ss.Names[stop]}' (the source joint of its parent '{ts.Names[ts.Parents[j]]}')",
-                            "expected the source joints to keep the target's hierarchy; fix the joint map");
-                    }
-
-                    path.Add(walk);
-                    walk = ss.Parents[walk];
-                }
-
-                path.Reverse();
-                carried[j] = path.ToArray();
-            }
-
-            return new SkeletonMap(source, target, map, sourceOf, sourceFirst, carried, synthesized, rootScale, sourceName);
+            MapChains chains = MapChains.Resolve(ss, ts, map, sourceName);
+            return new SkeletonMap(source, target, map, chains, rootScale, sourceName);
         }
 
         /// <summary>
@@ -393,7 +286,7 @@ namespace DeltaInterpolator.Core.Retargeting
             RequireSkeleton(target.Skeleton, Target, "target");
             RequireSkeleton(source.Skeleton, Source, "source");
             if (source.FrameCount == 0) throw new ArgumentException("the source clip has no frames", nameof(source));
-            int[]? keys = CheckKeys(sourceKeyFrames, source.FrameCount);
+            int[]? keys = SourceKeyFrames.Check(sourceKeyFrames, source.FrameCount);
             int js = Source.JointCount, jt = Target.JointCount, n = target.FrameCount;
             var positions = new double[n * js * 3];
             var rotations = new double[n * js * 4];
@@ -408,7 +301,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 }
                 else
                 {
-                    SampleKeys(source, keys, sourceFrame, lp, lr);
+                    SourceKeyFrames.Sample(source, keys, sourceFrame, lp, lr);
                 }
 
                 ToSourceFrame(Vector3D.Read(target.LocalPositions, target.PositionIndex(f, 0)), target.LocalRotations.AsSpan(target.RotationIndex(f, 0), jt * 4), lp, lr);
@@ -471,101 +364,12 @@ namespace DeltaInterpolator.Core.Retargeting
             (hips - offset).Write(sourceLocalPositions, 0);
         }
 
-        private static void SampleKeys(MotionClip source, int[] keys, double frame, Span<double> positions, Span<double> rotations)
-        {
-            if (frame <= keys[0])
-            {
-                MotionResampler.Blend(source, keys[0], keys[0], 0, positions, rotations);
-                return;
-            }
-
-            int last = keys.Length - 1;
-            if (frame >= keys[last])
-            {
-                MotionResampler.Blend(source, keys[last], keys[last], 0, positions, rotations);
-                return;
-            }
-
-            int k = Array.BinarySearch(keys, (int)Math.Floor(frame));
-            if (k < 0) k = ~k - 1;
-            double t = (frame - keys[k]) / (keys[k + 1] - keys[k]);
-            MotionResampler.Blend(source, keys[k], keys[k + 1], t < 1e-12 ? 0 : t, positions, rotations);
-        }
-
-        private static int[]? CheckKeys(IReadOnlyList<int>? keys, int frameCount)
-        {
-            if (keys == null) return null;
-            if (keys.Count == 0) throw new ArgumentException("source key frames are empty; pass null to use every source frame", nameof(keys));
-            var result = new int[keys.Count];
-            for (int i = 0; i < result.Length; i++)
-            {
-                result[i] = keys[i];
-                if (result[i] < 0 || result[i] >= frameCount) throw new ArgumentOutOfRangeException(nameof(keys), $"key frame {result[i]} is not in the source clip (0..{frameCount - 1})");
-                if (i > 0 && result[i] <= result[i - 1]) throw new ArgumentException("source key frames must be strictly increasing", nameof(keys));
-            }
-
-            return result;
-        }
-
         private static void RequireSkeleton(Skeleton given, Skeleton expected, string what)
         {
             if (!ReferenceEquals(given, expected) && !given.HasSameHierarchy(expected))
             {
                 throw new ArgumentException($"the {what} clip is not on the map's {what} skeleton", what);
             }
-        }
-
-        private static QuaternionD RootYaw(ReferencePose source, ReferencePose target, int[] sourceOf, int[] sourceFirst)
-        {
-            // Least-squares yaw between the horizontal parts of unit directions from the root to joints of
-            // the target and from s(root) to their source counterparts: θ = atan2(Σ (a × b)·Y, Σ a·b).
-            // The root's own children come first: they move rigidly with the root, so a reference pose whose
-            // limbs differ from the target's (arms lowered, legs spread) does not bias the yaw. Only when
-            // they give no horizontal direction (e.g. all of zero length) every joint is used.
-            Skeleton ts = target.Skeleton;
-            for (int pass = 0; pass < 2; pass++)
-            {
-                double cross = 0, dot = 0, weight = 0;
-                Vector3D t0 = target.GlobalPosition(0), s0 = source.GlobalPosition(sourceOf[0]);
-                for (int k = 1; k < ts.JointCount; k++)
-                {
-                    if (pass == 0 && ts.Parents[k] != 0) continue;
-                    Vector3D a = target.GlobalPosition(k) - t0, b = source.GlobalPosition(sourceFirst[k]) - s0;
-                    double la = a.Length, lb = b.Length;
-                    if (la < 1e-12 || lb < 1e-12) continue;
-                    a = (1.0 / la) * a;
-                    b = (1.0 / lb) * b;
-                    cross += a.Z * b.X - a.X * b.Z;
-                    dot += a.X * b.X + a.Z * b.Z;
-                    weight += Math.Sqrt((a.X * a.X + a.Z * a.Z) * (b.X * b.X + b.Z * b.Z));
-                }
-
-                if (weight < 0.5 && pass == 0) continue;
-                double half = 0.5 * Math.Atan2(cross, dot);
-                return new QuaternionD(Math.Cos(half), 0.0, Math.Sin(half), 0.0);
-            }
-
-            return QuaternionD.Identity;
-        }
-
-        private static double LongestBone(ReferencePose pose)
-        {
-            double longest = 0;
-            ReadOnlySpan<double> o = pose.Skeleton.OffsetSpan;
-            for (int j = 1; j < pose.Skeleton.JointCount; j++) longest = Math.Max(longest, Vector3D.Read(o, 3 * j).Length);
-            return longest;
-        }
-
-        /// <summary>
-        /// A skeleton's leg length as retargeting measures it: the height of <paramref name="root"/> above the
-        /// lowest of <paramref name="joints"/> in <paramref name="pose"/> (Y up). Foot locking and the foot-skating
-        /// measure use the same length, so their thresholds scale with the character as the root does.
-        /// </summary>
-        internal static double LegLength(ReferencePose pose, IReadOnlyList<int> joints, int root)
-        {
-            double lowest = double.PositiveInfinity;
-            foreach (int j in joints) lowest = Math.Min(lowest, pose.GlobalPosition(j).Y);
-            return pose.GlobalPosition(root).Y - lowest;
         }
     }
 }

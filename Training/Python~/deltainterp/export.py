@@ -102,7 +102,7 @@ class FrameGraph(nn.Module):
             memory = [(key_memory[i, 0:1], key_memory[i, 1:2]) for i in range(len(self.model.blocks))]
             tokens = self.model.decode_queries(memory, query_frame_indices, gap_length, query_features)
         root, rotation = self.model.heads(tokens)
-        contacts = (self.model.contacts(tokens),) if self.model.has_contacts else ()
+        contacts = (self.model.contacts(tokens, memory, rows=self.batched),) if self.model.has_contacts else ()
         return (root, rotation) + contacts + _constants(self.model)
 
 
@@ -198,7 +198,7 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
                     "parameters": loaded.model.parameter_count()}
     if loaded.model.has_contacts:
         architecture["contact_head"] = cfg.contact_head
-        if cfg.contact_head == "mlp":
+        if cfg.contact_head in ("mlp", "block"):
             architecture["contact_hidden"] = cfg.contact_hidden
     return {
         "contract_version": C.CONTRACT_VERSION,

@@ -19,8 +19,10 @@ from .contract import CONTACT_JOINTS, FEATURES_PER_JOINT, INPUT_DELTA_MODES, OUT
 Tensor = torch.Tensor
 
 # The optional foot-contact head on the query tokens (contract version 3's `foot_contacts`): none, one Linear,
-# or Linear → ReLU → Linear with `contact_hidden` units.
-CONTACT_HEADS = ("none", "linear", "mlp")
+# Linear → ReLU → Linear with `contact_hidden` units, or `block`: one more transformer block of its own (query
+# tokens attending to the last block's key memory, started as a copy of that block) before that MLP, so that
+# the head can look at the keys again for what the motion heads never needed.
+CONTACT_HEADS = ("none", "linear", "mlp", "block")
 
 
 @dataclass
@@ -172,6 +174,21 @@ class Block(nn.Module):
         return self.mlp(x)
 
 
+class ContactBranch(nn.Module):
+    """The `block` contact head: a transformer block of its own on the query tokens, attending to the last
+    block's key memory, then Linear → ReLU → Linear to the contact logits."""
+
+    def __init__(self, c: "ModelConfig", channels: int) -> None:
+        super().__init__()
+        self.block = Block(c.width, c.heads, c.dropout)
+        # it attends to the last block's memory as that block projected it: no key/value projections of its own
+        del self.block.attention.key, self.block.attention.value
+        self.mlp = nn.Sequential(nn.Linear(c.width, c.contact_hidden), nn.ReLU(), nn.Linear(c.contact_hidden, channels))
+
+    def forward(self, tokens: Tensor, memory: Tuple[Tensor, Tensor], rows: bool = False) -> Tensor:
+        return self.mlp(self.block(tokens, memory[0], memory[1], rows))
+
+
 class DeltaInterpolator(nn.Module):
     def __init__(self, config: ModelConfig) -> None:
         super().__init__()
@@ -203,6 +220,8 @@ class DeltaInterpolator(nn.Module):
         elif c.contact_head == "mlp":
             self.contact_head = nn.Sequential(nn.Linear(c.width, c.contact_hidden), nn.ReLU(),
                                               nn.Linear(c.contact_hidden, channels))
+        elif c.contact_head == "block":
+            self.contact_head = ContactBranch(c, channels)
 
     # -- the two halves -------------------------------------------------------------------------
     def encode_keys(self, key_features: Tensor, key_frame_indices: Tensor, gap_length: Tensor
@@ -241,16 +260,23 @@ class DeltaInterpolator(nn.Module):
         rotation = self.rotation_head(tokens).reshape(tokens.shape[0], -1, self.config.joints, 6)
         return root, rotation
 
-    def contact_logits(self, tokens: Tensor) -> Tensor:
-        """(B, N, 4) logits of the query tokens' foot contacts (channels in CONTACT_JOINTS' order)."""
+    def contact_logits(self, tokens: Tensor, memory: Optional[List[Tuple[Tensor, Tensor]]] = None,
+                       rows: bool = False) -> Tensor:
+        """(B, N, 4) logits of the query tokens' foot contacts (channels in CONTACT_JOINTS' order). A `block`
+        head also needs the key memory (`decode_queries`' `memory`, and its `rows` layout)."""
         if self.contact_head is None:
             raise ValueError("this network has no contact head; expected a model_config with contact_head "
-                             "'linear' or 'mlp'")
+                             "'linear', 'mlp' or 'block'")
+        if isinstance(self.contact_head, ContactBranch):
+            if memory is None:
+                raise ValueError("a 'block' contact head needs the key memory")
+            return self.contact_head(tokens, memory[-1], rows)
         return self.contact_head(tokens)
 
-    def contacts(self, tokens: Tensor) -> Tensor:
+    def contacts(self, tokens: Tensor, memory: Optional[List[Tuple[Tensor, Tensor]]] = None,
+                 rows: bool = False) -> Tensor:
         """(B, N, 4) contact probabilities: the `foot_contacts` output (Sigmoid inside the graph)."""
-        return torch.sigmoid(self.contact_logits(tokens))
+        return torch.sigmoid(self.contact_logits(tokens, memory, rows))
 
     @property
     def has_contacts(self) -> bool:
@@ -265,7 +291,7 @@ class DeltaInterpolator(nn.Module):
         if with_contacts:
             _, memory = self.encode_keys(key_features, key_frame_indices, gap_length)
             tokens = self.decode_queries(memory, query_frame_indices, gap_length, query_features)
-            return self.heads(tokens) + (self.contacts(tokens),)
+            return self.heads(tokens) + (self.contacts(tokens, memory),)
         if with_keys:
             return self.forward_with_keys(key_features, key_frame_indices, query_frame_indices, gap_length,
                                           query_features)

@@ -320,7 +320,41 @@ def average_weights(averaged: Optional[DeltaInterpolator], count: int,
     return averaged, count
 
 
-def train(cfg: TrainConfig, progress: bool = True) -> Path:
+@dataclass
+class TrainingRun:
+    """What the stages of `train` share: where the run is, its data, its model and optimizer, and the
+    state an exact resume restores (step, RNG, running average, last validation)."""
+    cfg: TrainConfig
+    progress: bool
+    rank: int
+    world: int
+    device: torch.device
+    out: Path
+    ckpt_path: Path
+    pack: Optional[MotionPack] = None
+    train_starts: Optional[np.ndarray] = None
+    val_starts: Optional[np.ndarray] = None
+    skeleton: Optional[SkeletonTensors] = None
+    model_cfg: Optional[ModelConfig] = None
+    model: Optional[DeltaInterpolator] = None
+    net: Optional[torch.nn.Module] = None  # the model, wrapped in DistributedDataParallel when world > 1
+    optimizer: Optional[torch.optim.Optimizer] = None
+    rng: Optional[np.random.Generator] = None
+    step: int = 0
+    averaged: Optional[DeltaInterpolator] = None  # the running mean of the weights after --average-from
+    averaged_count: int = 0
+    last_val: Dict[str, float] = field(default_factory=dict)
+    bar: object = None
+    started: float = 0.0
+
+    @property
+    def speaks(self) -> bool:
+        """Whether this process prints: rank 0, with progress on."""
+        return self.rank == 0 and self.progress
+
+
+def start_processes(cfg: TrainConfig) -> Tuple[int, int, torch.device]:
+    """(rank, world size, device): joins the torchrun process group when there is one."""
     rank, world = 0, 1
     if _distributed():
         import torch.distributed as dist
@@ -330,9 +364,14 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
     device = torch.device(f"cuda:{int(os.environ.get('LOCAL_RANK', 0))}" if torch.cuda.is_available() else "cpu")
     if cfg.threads:
         torch.set_num_threads(cfg.threads)
-    out = Path(cfg.out)
-    existing = run_checkpoint(out)  # before any work: refuses a file, or a folder of other files
-    ckpt_path = out / "checkpoint.pt"
+    return rank, world, device
+
+
+def open_run(run: TrainingRun) -> Optional[Dict]:
+    """The checkpoint to resume from (None for a new run), refused before any work when it was written
+    with other settings; creates the run folder."""
+    cfg, ckpt_path = run.cfg, run.ckpt_path
+    existing = run_checkpoint(run.out)  # before any work: refuses a file, or a folder of other files
     state = read_checkpoint(existing) if existing else None
     if state is not None:
         for key in ("model", "optimizer", "step", "rng", "torch_rng", "python_rng", "model_config"):
@@ -346,217 +385,288 @@ def train(cfg: TrainConfig, progress: bool = True) -> Path:
         if int(state["step"]) > cfg.steps:
             raise CheckpointError(ckpt_path, f"the run is already at step {int(state['step'])}, past --steps "
                                   f"{cfg.steps}", f"expected --steps ≥ {int(state['step'])} (or a new --out)")
-        if rank == 0 and progress and "steps" in saved_cfg and saved_cfg["steps"] != cfg.steps:
+        if run.speaks and "steps" in saved_cfg and saved_cfg["steps"] != cfg.steps:
             print(f"warning: {ckpt_path}: --steps {cfg.steps} but the run used {saved_cfg['steps']}: training on to "
                   f"step {cfg.steps}, the lr drop moves from step {int(cfg.decay_at * saved_cfg['steps'])} to "
                   f"{int(cfg.decay_at * cfg.steps)}")
-        if rank == 0 and progress and saved_cfg.get("data", cfg.data) != cfg.data:
+        if run.speaks and saved_cfg.get("data", cfg.data) != cfg.data:
             print(f"warning: {ckpt_path}: --data {cfg.data} but the run used {saved_cfg['data']}")
-    out.mkdir(parents=True, exist_ok=True)
-    pack = load_pack(cfg.data)
-    train_starts, val_starts = split_windows(pack)
-    if len(train_starts) == 0:
+    run.out.mkdir(parents=True, exist_ok=True)
+    return state
+
+
+def load_training_data(run: TrainingRun) -> None:
+    """The motion pack, its training and validation windows and the skeleton as tensors."""
+    cfg = run.cfg
+    run.pack = pack = load_pack(cfg.data)
+    run.train_starts, run.val_starts = split_windows(pack)
+    if len(run.train_starts) == 0:
         longest = max((int(b - a) for a, b in (pack.file_frames(i) for i in range(len(pack.files)))), default=0)
         raise ValueError(f"{cfg.data}: no 50-frame training window in the first 90 % of any file (the longest has "
                          f"{longest} frames); expected files of at least 57 frames")
-    if len(val_starts) == 0 and rank == 0 and progress:
+    if len(run.val_starts) == 0 and run.speaks:
         # A small pack (e.g. 2 files of 200 frames) has no 65-frame tail to validate on: train anyway.
         print(f"warning: {cfg.data}: no 65-frame validation window in the last 10 % of any file (files of 660 "
               "frames or more have one); training without validation")
-    skeleton = skeleton_tensors(pack, cfg.unit_scale, device)
-    model_cfg = preset(cfg.preset, joints=pack.skeleton.joint_count, **cfg.model_overrides)
+    run.skeleton = skeleton_tensors(pack, cfg.unit_scale, run.device)
+
+
+def build_model(run: TrainingRun, state: Optional[Dict]) -> None:
+    """The network (seeded, or warm-started from --init-from on a new run), its optimizer and the data RNG."""
+    cfg = run.cfg
+    run.model_cfg = model_cfg = preset(cfg.preset, joints=run.pack.skeleton.joint_count, **cfg.model_overrides)
     if state is not None:
         different = architecture_differences(dict(state["model_config"]), model_cfg)
         if different:
-            raise CheckpointError(ckpt_path, "resuming another architecture: " + ", ".join(different),
+            raise CheckpointError(run.ckpt_path, "resuming another architecture: " + ", ".join(different),
                                   "expected the run's --preset and overrides (or a new --out)")
-
     if 10 + cfg.max_gap + 1 > model_cfg.embedding_size:
         raise ValueError(f"--max-gap {cfg.max_gap}: 10 past keys + {cfg.max_gap} missing frames + the target need "
                          f"frame indices up to {10 + cfg.max_gap}, but the {cfg.preset} network embeds frames "
                          f"0..{model_cfg.embedding_size - 1}; expected --max-gap ≤ {model_cfg.embedding_size - 11}")
     torch.manual_seed(cfg.seed)  # seed BEFORE building the model: the seed decides the initial weights
-    model = DeltaInterpolator(model_cfg).to(device)
+    run.model = DeltaInterpolator(model_cfg).to(run.device)
     if cfg.init_from and state is None:
-        model.load_state_dict(initial_weights(cfg.init_from, model_cfg))
-        if rank == 0 and progress:
+        run.model.load_state_dict(initial_weights(cfg.init_from, model_cfg))
+        if run.speaks:
             print(f"initial weights from {cfg.init_from}")
-    optimizer = torch.optim.Adam(model.parameters(), lr=learning_rate(cfg, 0))
-    rng = np.random.default_rng([cfg.seed, rank])
-    step = 0
+    run.optimizer = torch.optim.Adam(run.model.parameters(), lr=learning_rate(cfg, 0))
+    run.rng = np.random.default_rng([cfg.seed, run.rank])
     if cfg.average_from < 0:
         raise ValueError(f"--average-from {cfg.average_from}; expected a step ≥ 0 (0: no averaging)")
-    averaged: Optional[DeltaInterpolator] = None  # the running mean of the weights after --average-from
-    averaged_count = 0
-    if state is not None:
-        # read_checkpoint loaded it without running code from it (weights-only; RNG states as plain values)
-        try:
-            # With averaging, "model" holds the average (what export and evaluation read) and
-            # "live_model" the weights the optimizer is moving.
-            model.load_state_dict(state.get("live_model", state["model"]))
-            if "live_model" in state:
-                averaged = copy.deepcopy(model)
-                averaged.load_state_dict(state["model"])
-                averaged_count = int(state["averaged_count"])
-            optimizer.load_state_dict(state["optimizer"])
-            step = int(state["step"])
-            if rank < len(state["rng"]):
-                rng.bit_generator.state = state["rng"][rank]
-            else:  # more processes than the run had: a new, distinct data stream for this one
-                rng = np.random.default_rng([cfg.seed, rank, step])
-            if len(state["rng"]) != world and rank == 0 and progress:
-                print(f"warning: {ckpt_path}: the run had {len(state['rng'])} process(es), now {world}: "
-                      "the resume is not exact (data streams differ)")
-            torch.set_rng_state(state["torch_rng"])
-            random.setstate(tuple(tuple(v) if isinstance(v, list) else v for v in state["python_rng"]))
-        except (RuntimeError, ValueError, TypeError, KeyError, IndexError) as e:
-            detail = " ".join(str(e).split())[:200]
-            raise CheckpointError(ckpt_path, f"cannot be resumed ({type(e).__name__}: {detail})",
-                                  "expected a checkpoint `train` wrote with the same settings")
-        del state
-        dropped = trim_run_logs(out, step) if rank == 0 else 0
-        if rank == 0 and progress:
-            print(f"resumed from {ckpt_path} at step {step}")
-            if dropped:
-                print(f"dropped {dropped} log record(s) written after the checkpoint's step {step} (they are redone)")
-            if step >= cfg.steps:
-                print(f"{ckpt_path}: the run is complete at step {step} (--steps {cfg.steps}); nothing to train")
-    net = model
-    if world > 1:
-        from torch.nn.parallel import DistributedDataParallel
-        net = DistributedDataParallel(model, device_ids=[device.index] if device.type == "cuda" else None)
+
+
+def restore_state(run: TrainingRun, state: Dict) -> None:
+    """An exact resume: weights (live and averaged), optimizer, step, every RNG; drops the log records
+    written after the checkpoint's step."""
+    ckpt_path, rank = run.ckpt_path, run.rank
+    # read_checkpoint loaded it without running code from it (weights-only; RNG states as plain values)
+    try:
+        # With averaging, "model" holds the average (what export and evaluation read) and
+        # "live_model" the weights the optimizer is moving.
+        run.model.load_state_dict(state.get("live_model", state["model"]))
+        if "live_model" in state:
+            run.averaged = copy.deepcopy(run.model)
+            run.averaged.load_state_dict(state["model"])
+            run.averaged_count = int(state["averaged_count"])
+        run.optimizer.load_state_dict(state["optimizer"])
+        run.step = step = int(state["step"])
+        if rank < len(state["rng"]):
+            run.rng.bit_generator.state = state["rng"][rank]
+        else:  # more processes than the run had: a new, distinct data stream for this one
+            run.rng = np.random.default_rng([run.cfg.seed, rank, step])
+        if len(state["rng"]) != run.world and run.speaks:
+            print(f"warning: {ckpt_path}: the run had {len(state['rng'])} process(es), now {run.world}: "
+                  "the resume is not exact (data streams differ)")
+        torch.set_rng_state(state["torch_rng"])
+        random.setstate(tuple(tuple(v) if isinstance(v, list) else v for v in state["python_rng"]))
+    except (RuntimeError, ValueError, TypeError, KeyError, IndexError) as e:
+        detail = " ".join(str(e).split())[:200]
+        raise CheckpointError(ckpt_path, f"cannot be resumed ({type(e).__name__}: {detail})",
+                              "expected a checkpoint `train` wrote with the same settings")
+    dropped = trim_run_logs(run.out, step) if rank == 0 else 0
+    if run.speaks:
+        print(f"resumed from {ckpt_path} at step {step}")
+        if dropped:
+            print(f"dropped {dropped} log record(s) written after the checkpoint's step {step} (they are redone)")
+        if step >= run.cfg.steps:
+            print(f"{ckpt_path}: the run is complete at step {step} (--steps {run.cfg.steps}); nothing to train")
+
+
+def window_source(run: TrainingRun) -> WindowSource:
+    """The batch source for the run's sampler settings, refusing a --max-gap no file can give (and the
+    loss options) before training starts."""
+    cfg = run.cfg
     sampler = TransitionSampler(min_past=cfg.min_past, longest_past_share=cfg.longest_past_share,
                                 uniform_past=cfg.uniform_past, min_gap=cfg.min_gap, max_gap=cfg.max_gap)
-    source = WindowSource(pack, train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, device,
-                          ranges=training_ranges(pack))
-    source.starts_for(10 + cfg.max_gap + 1 + (cfg.max_gap + 1 if cfg.chained_share > 0 else 0))  # refuse a --max-gap no file can give before training starts
+    source = WindowSource(run.pack, run.train_starts, 50, sampler, cfg.mirror, cfg.random_yaw, run.device,
+                          ranges=training_ranges(run.pack))
+    source.starts_for(10 + cfg.max_gap + 1 + (cfg.max_gap + 1 if cfg.chained_share > 0 else 0))
     if not (cfg.foot_contact_weight >= 0 and math.isfinite(cfg.foot_contact_weight)):
         raise ValueError(f"--foot-contact-weight {cfg.foot_contact_weight}; expected a weight ≥ 0 (0: off)")
     if not 0.0 <= cfg.chained_share <= 1.0:
         raise ValueError(f"--chained-share {cfg.chained_share}; expected a share from 0 to 1")
+    return source
+
+
+def log_columns(cfg: TrainConfig) -> Tuple[List[str], List[str]]:
+    """(loss terms, log.csv columns): fixed for the run (--foot-contact-weight must match on resume, so the
+    header stays right)."""
+    losses = ["total", "quat", "pos", "key_quat", "key_pos"] + (["foot"] if cfg.foot_contact_weight > 0 else [])
+    return losses, ["step", "lr"] + losses + ["seconds"]
+
+
+def training_step(run: TrainingRun, source: WindowSource) -> Tuple[Dict[str, float], object, float]:
+    """One optimizer step on one drawn batch: (loss terms as floats, the batch's key layout, the lr)."""
+    cfg = run.cfg
+    lr = learning_rate(cfg, run.step)
+    for g in run.optimizer.param_groups:
+        g["lr"] = lr
+    if cfg.chained_share > 0 and run.rng.random() < cfg.chained_share:
+        layout, roots, quats = source.draw_chained(run.rng, cfg.batch_size, run.model, run.skeleton)
+    else:
+        layout, roots, quats = source.draw(run.rng, cfg.batch_size)
+    batch = make_batch(roots, quats, layout, run.skeleton, run.model_cfg.output_delta_mode,
+                       run.model_cfg.input_delta_mode)
+    terms = loss(run.net, batch, run.skeleton, cfg.reconstruction_scale, foot_contact_weight=cfg.foot_contact_weight)
+    run.optimizer.zero_grad(set_to_none=True)
+    terms["total"].backward()
+    run.optimizer.step()
+    run.step += 1
+    if cfg.average_from and run.step > cfg.average_from:
+        run.averaged, run.averaged_count = average_weights(run.averaged, run.averaged_count, run.model)
+    values = {k: float(v) for k, v in terms.items()}
+    if not math.isfinite(values["total"]):
+        # Every rank sees it by the next step (the NaN gradients are all-reduced), so none hangs.
+        if run.bar is not None:
+            run.bar.close()  # the error line goes on a line of its own
+        raise ValueError(f"{run.ckpt_path}: the training loss became non-finite at step {run.step} "
+                         f"({values['total']}); expected finite (lower --lr?). The last "
+                         f"checkpoint is kept; log.csv and validation.jsonl hold no NaN")
+    return values, layout, lr
+
+
+def write_log_row(run: TrainingRun, window_losses: List[Dict[str, float]], lr: float) -> None:
+    """One log.csv row: the mean of each loss term since the last row."""
+    losses, fields = log_columns(run.cfg)
+    log_path = run.out / "log.csv"
+    row = {k: float(np.mean([w.get(k, 0.0) for w in window_losses])) for k in losses}
+    row.update(step=run.step, lr=lr, seconds=round(time.time() - run.started, 1))
+    text = io.StringIO(newline="")
+    # Fixed columns: validation metrics live in validation.jsonl. (Appending them here gave
+    # rows with more cells than the header, which was written before the first validation.)
+    w = csv.DictWriter(text, fieldnames=fields)
+    if not log_path.exists():
+        w.writeheader()
+    w.writerow(row)
+    safe_output.append_text(log_path, text.getvalue())  # whole file via temp + rename
+
+
+def validate(run: TrainingRun, long_val: Dict[int, np.ndarray]) -> None:
+    """Validation metrics of what the checkpoint exports, appended to validation.jsonl; refuses non-finite."""
+    shipped = run.averaged or run.model  # validate what the checkpoint exports
+    pack, skeleton = run.pack, run.skeleton
+    last_val = validation_metrics(shipped, pack, run.val_starts, skeleton)
+    for n, starts in long_val.items():
+        if len(starts) > 0:
+            last_val.update(validation_metrics(shipped, pack, starts, skeleton, gaps=(n,)))
+    for p in VALIDATION_SHORT_PASTS if run.cfg.min_past < 10 else ():
+        short = validation_metrics(shipped, pack, run.val_starts, skeleton, past=p)
+        last_val.update({f"p{p}_{k}": v for k, v in short.items()})
+    run.last_val = last_val
+    bad = sorted(k for k, v in last_val.items() if not math.isfinite(v))
+    if bad:
+        if run.bar is not None:
+            run.bar.close()
+        raise ValueError(f"{run.ckpt_path}: validation gave non-finite {', '.join(bad[:3])} at step {run.step}; "
+                         f"expected finite (a diverged network?). The last checkpoint is kept")
+    safe_output.append_text(run.out / "validation.jsonl", json.dumps({"step": run.step, **last_val}) + "\n")
+    if run.bar is not None:
+        run.bar.write(f"step {run.step}: " + "  ".join(
+            f"n={n} L2Q {last_val[f'model_l2q_{n}']:.3f} (slerp {last_val.get(f'slerp_l2q_{n}', float('nan')):.3f})"
+            for n in (5, 15, 30) + tuple(n for n in long_val if f"model_l2q_{n}" in last_val)))
+
+
+def save_run_checkpoint(run: TrainingRun) -> None:
+    """Everything an exact resume needs. Under DDP every rank calls this (the RNG states are
+    gathered); rank 0 writes atomically."""
+    rngs = [run.rng.bit_generator.state]
+    if run.world > 1:
+        import torch.distributed as dist
+        rngs = [None] * run.world
+        dist.all_gather_object(rngs, run.rng.bit_generator.state)
+    if run.rank != 0:
+        return
+    state = {"model": (run.averaged or run.model).state_dict(), "optimizer": run.optimizer.state_dict(),
+             "step": run.step, "rng": rngs, "torch_rng": torch.get_rng_state(), "python_rng": random.getstate(),
+             "model_config": run.model_cfg.to_dict(), "train_config": asdict(run.cfg),
+             "skeleton": run.pack.skeleton.to_json(), "unit_scale": run.cfg.unit_scale, "validation": run.last_val}
+    if run.averaged is not None:
+        state.update(live_model=run.model.state_dict(), averaged_count=run.averaged_count)
+    save_checkpoint_file(state, run.ckpt_path)  # format 2 (loads weights-only), temporary file + rename
+
+
+def time_is_up(run: TrainingRun) -> bool:
+    """--max-minutes reached; under DDP rank 0 decides, so every rank stops at the same step."""
+    up = run.cfg.max_minutes > 0 and (time.time() - run.started) > run.cfg.max_minutes * 60
+    if run.world > 1:
+        import torch.distributed as dist
+        flag = torch.tensor([1.0 if up else 0.0])
+        dist.broadcast(flag, 0)
+        up = bool(flag.item())
+    return up
+
+
+def run_steps(run: TrainingRun, source: WindowSource) -> None:
+    """The training loop: steps, log rows every 50 steps, validation and checkpoints on their schedules,
+    until --steps or --max-minutes."""
+    cfg = run.cfg
     # Long gaps are validated on windows of their own length (fewer files have such tails).
     long_gaps = tuple(n for n in VALIDATION_LONG_GAPS if n <= cfg.max_gap)
-    long_val = {n: split_windows(pack, validation_length=10 + n + 1)[1] for n in long_gaps}
-
-    log_path = out / "log.csv"
-    # Fixed columns for the run (--foot-contact-weight must match on resume, so the header stays right).
-    losses = ["total", "quat", "pos", "key_quat", "key_pos"] + (["foot"] if cfg.foot_contact_weight > 0 else [])
-    fields = ["step", "lr"] + losses + ["seconds"]
-    bar = None
-    if rank == 0 and progress:
+    long_val = {n: split_windows(run.pack, validation_length=10 + n + 1)[1] for n in long_gaps}
+    if run.speaks:
         from tqdm import tqdm
-        bar = tqdm(total=cfg.steps, initial=step, desc=f"train {cfg.preset}", unit="step", dynamic_ncols=True)
-    started = time.time()
+        run.bar = tqdm(total=cfg.steps, initial=run.step, desc=f"train {cfg.preset}", unit="step",
+                       dynamic_ncols=True)
+    run.started = time.time()
     window_losses: List[Dict[str, float]] = []
-    last_val: Dict[str, float] = {}
-
-    def save_checkpoint() -> None:
-        """Everything an exact resume needs. Under DDP every rank calls this (the RNG states are
-        gathered); rank 0 writes atomically."""
-        rngs = [rng.bit_generator.state]
-        if world > 1:
-            import torch.distributed as dist
-            rngs = [None] * world
-            dist.all_gather_object(rngs, rng.bit_generator.state)
-        if rank != 0:
-            return
-        state = {"model": (averaged or model).state_dict(), "optimizer": optimizer.state_dict(), "step": step,
-                 "rng": rngs, "torch_rng": torch.get_rng_state(), "python_rng": random.getstate(),
-                 "model_config": model_cfg.to_dict(), "train_config": asdict(cfg),
-                 "skeleton": pack.skeleton.to_json(), "unit_scale": cfg.unit_scale, "validation": last_val}
-        if averaged is not None:
-            state.update(live_model=model.state_dict(), averaged_count=averaged_count)
-        save_checkpoint_file(state, ckpt_path)  # format 2 (loads weights-only), temporary file + rename
-
-    def time_is_up() -> bool:
-        up = cfg.max_minutes > 0 and (time.time() - started) > cfg.max_minutes * 60
-        if world > 1:  # every rank must stop at the same step
-            import torch.distributed as dist
-            flag = torch.tensor([1.0 if up else 0.0])
-            dist.broadcast(flag, 0)
-            up = bool(flag.item())
-        return up
-
-    model.train()
-    while step < cfg.steps:
-        lr = learning_rate(cfg, step)
-        for g in optimizer.param_groups:
-            g["lr"] = lr
-        if cfg.chained_share > 0 and rng.random() < cfg.chained_share:
-            layout, roots, quats = source.draw_chained(rng, cfg.batch_size, model, skeleton)
-        else:
-            layout, roots, quats = source.draw(rng, cfg.batch_size)
-        batch = make_batch(roots, quats, layout, skeleton, model_cfg.output_delta_mode, model_cfg.input_delta_mode)
-        terms = loss(net, batch, skeleton, cfg.reconstruction_scale, foot_contact_weight=cfg.foot_contact_weight)
-        optimizer.zero_grad(set_to_none=True)
-        terms["total"].backward()
-        optimizer.step()
-        step += 1
-        if cfg.average_from and step > cfg.average_from:
-            averaged, averaged_count = average_weights(averaged, averaged_count, model)
-        window_losses.append({k: float(v) for k, v in terms.items()})
-        if not math.isfinite(window_losses[-1]["total"]):
-            # Every rank sees it by the next step (the NaN gradients are all-reduced), so none hangs.
-            if bar is not None:
-                bar.close()  # the error line goes on a line of its own
-            raise ValueError(f"{ckpt_path}: the training loss became non-finite at step {step} "
-                             f"({window_losses[-1]['total']}); expected finite (lower --lr?). The last "
-                             f"checkpoint is kept; log.csv and validation.jsonl hold no NaN")
-        if rank == 0 and bar is not None:
-            bar.update(1)
-            bar.set_postfix(loss=f"{window_losses[-1]['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
-        if rank == 0 and (step % 50 == 0 or step == cfg.steps):
-            row = {k: float(np.mean([w.get(k, 0.0) for w in window_losses])) for k in losses}
-            row.update(step=step, lr=lr, seconds=round(time.time() - started, 1))
-            text = io.StringIO(newline="")
-            # Fixed columns: validation metrics live in validation.jsonl. (Appending them here gave
-            # rows with more cells than the header, which was written before the first validation.)
-            w = csv.DictWriter(text, fieldnames=fields)
-            if not log_path.exists():
-                w.writeheader()
-            w.writerow(row)
-            safe_output.append_text(log_path, text.getvalue())  # whole file via temp + rename
+    run.model.train()
+    while run.step < cfg.steps:
+        values, layout, lr = training_step(run, source)
+        window_losses.append(values)
+        step = run.step
+        if run.rank == 0 and run.bar is not None:
+            run.bar.update(1)
+            run.bar.set_postfix(loss=f"{values['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
+        if run.rank == 0 and (step % 50 == 0 or step == cfg.steps):
+            write_log_row(run, window_losses, lr)
             window_losses.clear()
-        if rank == 0 and len(val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
-            shipped = averaged or model  # validate what the checkpoint exports
-            last_val = validation_metrics(shipped, pack, val_starts, skeleton)
-            for n, starts in long_val.items():
-                if len(starts) > 0:
-                    last_val.update(validation_metrics(shipped, pack, starts, skeleton, gaps=(n,)))
-            for p in VALIDATION_SHORT_PASTS if cfg.min_past < 10 else ():
-                short = validation_metrics(shipped, pack, val_starts, skeleton, past=p)
-                last_val.update({f"p{p}_{k}": v for k, v in short.items()})
-            bad = sorted(k for k, v in last_val.items() if not math.isfinite(v))
-            if bad:
-                if bar is not None:
-                    bar.close()
-                raise ValueError(f"{ckpt_path}: validation gave non-finite {', '.join(bad[:3])} at step {step}; "
-                                 f"expected finite (a diverged network?). The last checkpoint is kept")
-            safe_output.append_text(out / "validation.jsonl", json.dumps({"step": step, **last_val}) + "\n")
-            if bar is not None:
-                bar.write(f"step {step}: " + "  ".join(
-                    f"n={n} L2Q {last_val[f'model_l2q_{n}']:.3f} (slerp {last_val.get(f'slerp_l2q_{n}', float('nan')):.3f})"
-                    for n in (5, 15, 30) + tuple(n for n in long_val if f"model_l2q_{n}" in last_val)))
-        out_of_time = time_is_up()
+        if run.rank == 0 and len(run.val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
+            validate(run, long_val)
+        out_of_time = time_is_up(run)
         if step % cfg.checkpoint_every == 0 or step == cfg.steps or out_of_time:
-            save_checkpoint()
+            save_run_checkpoint(run)
         if out_of_time:
-            if rank == 0:
+            if run.rank == 0:
                 print(f"stopping at step {step}: --max-minutes {cfg.max_minutes} reached (resume to continue)")
             break
-    if bar is not None:
-        bar.close()
-    if rank == 0:
+    if run.bar is not None:
+        run.bar.close()
+
+
+def finish(run: TrainingRun) -> None:
+    """Plots (rank 0), then the processes meet and leave the process group."""
+    if run.rank == 0:
         try:
-            from .plots import plot_training
-            plot_training(out)
+            from .plots import plot_training  # matplotlib is optional: loaded only when a run ends
+            plot_training(run.out)
         except Exception as e:  # plots are a convenience; never lose a run over them
             print(f"(plots skipped: {e})")
-    if world > 1:
+    if run.world > 1:
         # Meet before tearing down: a rank that destroys its process group (and its DDP reducer) while
         # the other is still busy (rank 0 draws the plots) hung at exit in about one run in three here.
         import torch.distributed as dist
         dist.barrier()
-        del net
+        run.net = None
         dist.destroy_process_group()
-    return ckpt_path
+
+
+def train(cfg: TrainConfig, progress: bool = True) -> Path:
+    """A training run in named stages; returns the checkpoint's path. Resumes OUT/checkpoint.pt exactly."""
+    rank, world, device = start_processes(cfg)
+    out = Path(cfg.out)
+    run = TrainingRun(cfg, progress, rank, world, device, out, out / "checkpoint.pt")
+    state = open_run(run)
+    load_training_data(run)
+    build_model(run, state)
+    if state is not None:
+        restore_state(run, state)
+        del state
+    run.net = run.model
+    if world > 1:
+        from torch.nn.parallel import DistributedDataParallel
+        run.net = DistributedDataParallel(run.model, device_ids=[device.index] if device.type == "cuda" else None)
+    source = window_source(run)
+    run_steps(run, source)
+    finish(run)
+    return run.ckpt_path

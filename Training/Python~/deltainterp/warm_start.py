@@ -225,8 +225,8 @@ def _contact_metadata(proto, meta: dict, skeleton) -> Tuple[str, int, float]:
             math.isfinite(threshold) and 0 < threshold < 1):
         raise ValueError(f"contact_threshold {str(threshold)[:40]}, expected a number between 0 and 1")
     head = arch.get("contact_head")
-    if head not in ("linear", "mlp"):
-        raise ValueError(f"architecture.contact_head {str(head)[:40]}, expected 'linear' or 'mlp'")
+    if head not in ("linear", "mlp", "block"):
+        raise ValueError(f"architecture.contact_head {str(head)[:40]}, expected 'linear', 'mlp' or 'block'")
     hidden = arch.get("contact_hidden", 128)
     if not isinstance(hidden, int) or isinstance(hidden, bool) or not 1 <= hidden <= 4096:
         raise ValueError(f"architecture.contact_hidden {str(hidden)[:40]}")
