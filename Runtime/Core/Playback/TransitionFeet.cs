@@ -31,9 +31,6 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>The locker (on the character's skeleton, or the model's).</summary>
         public LiveFootLocker Locker { get; }
 
-        /// <summary>True when the locker holds the character's own legs (a <see cref="SkeletonJointMap"/> whose source has them).</summary>
-        public bool OnCharacterLegs => _rig != null;
-
         /// <summary>The feet of a player showing <paramref name="model"/>'s poses through <paramref name="map"/>, or null when neither skeleton has legs the locker finds.</summary>
         public static TransitionFeet? For(IJointMap map, Skeleton model)
         {

@@ -161,9 +161,6 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>The foot locker of this character's transitions (null when the model's skeleton lacks leg joints), for tests and tools.</summary>
         internal LiveFootLocker? Feet => _feet?.Locker;
 
-        /// <summary>True when the feet are locked on the character's own legs (a mapped rig), not on the model's.</summary>
-        internal bool LocksCharacterLegs => _feet?.OnCharacterLegs ?? false;
-
         /// <summary>Missing frames of the current request decoded so far.</summary>
         public int DecodedFrames => _job?.Decoded ?? 0;
 
