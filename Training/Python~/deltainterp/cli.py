@@ -359,9 +359,13 @@ def _run_contacts(args) -> int:
         raise ValueError(f"{args.data}: its skeleton is not the model's; expected a pack prepared for {args.model}")
     threshold = loaded.contact_threshold if args.threshold is None else args.threshold
     thresholds = tuple(sorted(set(K.THRESHOLDS) | {threshold}))
-    counts = K.contact_scores(loaded, pack, args.every, args.split, thresholds)
+    from_motion: dict = {}
+    counts = K.contact_scores(loaded, pack, args.every, args.split, thresholds, from_motion)
     print(f"{args.model} on {args.data} ({args.split}), planted where p >= {threshold}:")
     for line in K.format_scores(counts, threshold, thresholds):
+        print("  " + line)
+    print("the same rule applied to the baked motion itself (contacts labelled from the filled frames), for comparison:")
+    for line in K.format_scores(from_motion, threshold, thresholds):
         print("  " + line)
     if args.json:
         i = thresholds.index(threshold)
@@ -370,7 +374,11 @@ def _run_contacts(args) -> int:
                                                                  "recall": float(c.recall()[i, n]),
                                                                  "planted": int(c.actual[n])}
                                                               for n, j in enumerate(K.C.CONTACT_JOINTS)}}
-                            for k, c in counts.items()}}
+                            for k, c in counts.items()},
+                  "rule_on_baked_motion": {str(k): {j: {"precision": float(c.precision()[i, n]),
+                                                        "recall": float(c.recall()[i, n])}
+                                                    for n, j in enumerate(K.C.CONTACT_JOINTS)}
+                                           for k, c in from_motion.items()}}
         safe_output.write_text(args.json, json.dumps(report, indent=2) + "\n")
         print(f"wrote {args.json}")
     return 0

@@ -250,6 +250,19 @@ def test_contacts_prints_precision_and_recall(synthetic_pack_path, tmp_path):
     assert "planted where p >= 0.4" in r.stdout and "LeftToe P" in r.stdout
     report = json.loads((tmp_path / "c.json").read_text())
     assert report["threshold"] == 0.4 and set(report["every"]["15"]) >= set(C.CONTACT_JOINTS)
+    assert set(report["rule_on_baked_motion"]["15"]) == set(C.CONTACT_JOINTS)
+    assert "applied to the baked motion itself" in r.stdout
+
+
+def test_the_rule_on_the_baked_motion_is_counted_against_the_truths_labels(synthetic_pack_path):
+    """The motion-labelled contacts are scored on the same frames against the same truth labels as the predicted ones."""
+    from deltainterp.data import load_pack
+    pack = load_pack(str(synthetic_pack_path))
+    loaded = load_exported_model(FIXTURES / "tiny-model-contacts.onnx")
+    motion = {}
+    counts = K.contact_scores(loaded, pack, (15,), "validation", (0.5,), motion)
+    assert counts[15].frames == motion[15].frames > 0
+    assert (motion[15].actual == counts[15].actual).all()
 
 
 def test_motion_difference_is_zero_for_the_same_trunk_and_sees_a_changed_one(tmp_path):
