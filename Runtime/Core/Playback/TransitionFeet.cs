@@ -1,4 +1,5 @@
 using System;
+using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Skeletons;
@@ -7,20 +8,20 @@ namespace DeltaInterpolator.Core.Playback
 {
     /// <summary>
     /// The component's foot locking on the legs the character is shown with (issue 29, item 4; issue 27, item 5): a
-    /// character mapped through a <see cref="SkeletonJointMap"/> is locked on its own skeleton (the map's source,
+    /// character mapped through a <see cref="SkeletonPoseConverter"/> is locked on its own skeleton (the map's source,
     /// <see cref="FootRig.ForSource"/>), as bakes lock a retargeted rig, because rotations that hold a foot still on the
     /// model's legs make it slide on legs of other proportions; any other map (a character on the model's own
-    /// skeleton, <see cref="NameJointMap"/>) is locked in the model's space. Each shown pose: model space → the
+    /// skeleton, <see cref="NamePoseConverter"/>) is locked in the model's space. Each shown pose: model space → the
     /// character's skeleton → locked → the character's bones. Allocation-free after construction.
     /// </summary>
     internal sealed class TransitionFeet
     {
-        private readonly IJointMap _map;
-        private readonly SkeletonJointMap? _rig;
+        private readonly IPoseConverter _map;
+        private readonly SkeletonPoseConverter? _rig;
         private readonly double[] _startRoot = new double[3];
         private readonly double[] _startRotations;
 
-        private TransitionFeet(IJointMap map, LiveFootLocker locker, SkeletonJointMap? rig)
+        private TransitionFeet(IPoseConverter map, LiveFootLocker locker, SkeletonPoseConverter? rig)
         {
             _map = map;
             Locker = locker;
@@ -32,9 +33,9 @@ namespace DeltaInterpolator.Core.Playback
         public LiveFootLocker Locker { get; }
 
         /// <summary>The feet of a player showing <paramref name="model"/>'s poses through <paramref name="map"/>, or null when neither skeleton has legs the locker finds.</summary>
-        public static TransitionFeet? For(IJointMap map, Skeleton model)
+        public static TransitionFeet? For(IPoseConverter map, Skeleton model)
         {
-            if (map is SkeletonJointMap rig)
+            if (map is SkeletonPoseConverter rig)
             {
                 try
                 {

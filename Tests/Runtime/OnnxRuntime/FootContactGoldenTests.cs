@@ -61,7 +61,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void LazyFrameContactsMatchPyTorch(GoldenCase c)
         {
             Transition t = c.ToTransition(_model.Contract.Skeleton);
-            LazyDecoder decoder = _model.CreateLazy(c.PastFrames, c.Gap);
+            LazyInbetweener decoder = _model.CreateLazy(c.PastFrames, c.Gap);
             decoder.Begin(t);
             for (int k = c.Gap - 1; k >= 0; k--) decoder.DecodeFrame(k);
             double contacts = GoldenParityTests.MaxAbs(t.FootContacts, c.FootContacts!);

@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -83,7 +85,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>
-        /// Issue 29 on the batched decode path (<see cref="MainThreadDecoder"/>): a model with a contact output hands each
+        /// Issue 29 on the batched decode path (<see cref="MainThreadScheduler"/>): a model with a contact output hands each
         /// decoded frame's contacts to the component's locker, which plants feet by them, with 0 bytes per frame; a model
         /// without one leaves the locker labelling them.
         /// </summary>
@@ -147,7 +149,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>The model's skeleton as a Unity humanoid (HumanBodyBones names, metres, Unity's handedness, its T-pose as the reference) with thighs, shins and feet <paramref name="legScale"/> × the model's.</summary>
-        private static (SkeletonJointMap Map, Skeleton Unity) ScaledHumanoid(Skeleton model, double legScale)
+        private static (SkeletonPoseConverter Map, Skeleton Unity) ScaledHumanoid(Skeleton model, double legScale)
         {
             int n = model.JointCount;
             var names = new List<string>();
@@ -167,7 +169,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             var parents = new int[n];
             for (int j = 0; j < n; j++) parents[j] = model.Parents[j];
-            return (SkeletonJointMap.FromUnity(names, parents, positions, rotations, model, "scaled humanoid"), new Skeleton(names.ToArray(), parents, positions));
+            return (SkeletonPoseConverter.FromUnity(names, parents, positions, rotations, model, "scaled humanoid"), new Skeleton(names.ToArray(), parents, positions));
         }
 
         private static BvhAnimation LoadWalk()
@@ -185,7 +187,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>
-        /// A character on the model's skeleton in Unity's space (metres, left-handed: <see cref="NameJointMap"/> converts)
+        /// A character on the model's skeleton in Unity's space (metres, left-handed: <see cref="NamePoseConverter"/> converts)
         /// playing the walk as its own animation at a fixed frame rate; feet are measured in the model's space.
         /// </summary>
         private sealed class WalkLoop
@@ -199,8 +201,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double[] _localPositions;
             private readonly double[] _modelRoot = new double[3];
             private readonly double[] _modelRotations;
-            private readonly IJointMap _map;
+            private readonly IPoseConverter _map;
             private readonly Skeleton? _character; // a scaled humanoid's skeleton in Unity's space, or null: the model's
+            private readonly MainThreadScheduler _scheduler;
             private ArrayPoseStream _stream;
             private int _frame;
 
@@ -217,21 +220,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _modelRotations = new double[4 * j];
                 if (legScale == 1)
                 {
-                    _map = new NameJointMap(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
+                    _map = new NamePoseConverter(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
                     Rig = FootRig.ForModel(_clip.Skeleton);
                 }
                 else
                 {
                     // A humanoid whose thighs, shins and feet are legScale × the model's (Unity's space, metres): the walk
                     // retargeted onto it is its own animation, and its feet are measured on its own legs.
-                    (SkeletonJointMap map, Skeleton unity) = ScaledHumanoid(c.Skeleton, legScale);
+                    (SkeletonPoseConverter map, Skeleton unity) = ScaledHumanoid(c.Skeleton, legScale);
                     _map = map;
                     _character = unity;
                     FootRig source = FootRig.ForSource(map.Map);
                     Rig = new FootRig(unity, source.Left, source.Right, source.LegLength);
                 }
 
-                Player = new TransitionPlayer(_map, new MainThreadDecoder(model), new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
+                _scheduler = new MainThreadScheduler(model);
+                Player = new TransitionPlayer(_map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
                 _stream = new ArrayPoseStream(new double[3], new double[4 * j]);
                 _frame = -1;
             }
@@ -266,6 +270,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 _frame++;
                 Sample(Time, _stream.Root, _stream.Rotations);
+                _scheduler.Pump();
                 Player.Step(Time, ref _stream);
             }
 
