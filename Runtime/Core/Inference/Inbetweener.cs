@@ -242,6 +242,12 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             contract.CheckConstants(tensors.ContractVersion!.Longs![0], tensors.JointCount!.Longs![0], tensors.KeyFeatureSize!.Longs![0]);
+            if (tensors.FootContacts != null)
+            {
+                var report = new ModelCheckReport();
+                ModelChecks.ContactProbabilities(contract, tensors.FootContacts.Floats, report);
+                report.ThrowIfErrors();
+            }
         }
 
         private void ThrowIfDisposed()

@@ -93,6 +93,18 @@ namespace DeltaInterpolator.Core.Scheduling
 
         public void Publish(int decoded) => Volatile.Write(ref _decoded, decoded);
 
+        /// <summary>
+        /// The model's predicted contacts (4 probabilities, <see cref="Transition.ContactThreshold"/>) of the transition's
+        /// frame <paramref name="frame"/> (0 the last past key, 1..n the missing frames, n + 1 the target), once it is
+        /// decoded; empty for keys, frames not decoded yet and models without contacts (the locker labels them then).
+        /// </summary>
+        public ReadOnlySpan<float> ContactsOf(int frame)
+        {
+            int k = frame - 1;
+            if (!Transition.HasFootContacts || k < 0 || k >= Transition.MissingFrames || Decoded <= k) return default;
+            return new ReadOnlySpan<float>(Transition.FootContacts, Transition.ContactChannels * k, Transition.ContactChannels);
+        }
+
         public void Finish() => Volatile.Write(ref _finished, 1);
 
         public void Cancel() => Volatile.Write(ref _cancelled, 1);

@@ -70,6 +70,7 @@ namespace DeltaInterpolator.Core.Workflows
             }
 
             var results = new MethodBake[methods.Count];
+            var rigContacts = new FootContacts();
             int done = 0;
             for (int i = 0; i < methods.Count; i++)
             {
@@ -79,9 +80,16 @@ namespace DeltaInterpolator.Core.Workflows
                 double seconds = clock.Elapsed.TotalSeconds;
                 done += plans[i].Gaps.Count;
                 MotionClip onRig = rig.FromModel(baked, rigClip, rigKeys);
-                rigLockers[i]?.Lock(onRig, Relative(rigKeys));
-                modelLockers[i]?.Lock(baked, Relative(modelKeys));
-                results[i] = new MethodBake(methods[i], plans[i], baked, onRig, seconds);
+                if (rigLockers[i] != null)
+                {
+                    // The model's predicted contacts, on the rig's frames (nearest in time; the rig may run at another rate).
+                    double start = rigKeys[0] * rigClip.FrameTime - modelKeys[0] * baked.FrameTime;
+                    bakers[i].Contacts.ResampleInto(rigContacts, onRig.FrameCount, onRig.FrameTime, baked.FrameTime, start);
+                    rigLockers[i]!.Lock(onRig, Relative(rigKeys), rigContacts);
+                }
+
+                modelLockers[i]?.Lock(baked, Relative(modelKeys), bakers[i].Contacts);
+                results[i] = new MethodBake(methods[i], plans[i], baked, onRig, seconds, bakers[i].Contacts);
             }
 
             return new BakeRun(rig, onModel, (int[])rigKeys.Clone(), modelKeys, results, warnings.ToArray());

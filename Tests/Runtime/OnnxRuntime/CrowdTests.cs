@@ -601,7 +601,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     InferenceTensor o = _outputs[i];
                     switch (o.Name)
                     {
-                        case TensorNames.ContractVersion: o.Longs![0] = 2; break;
+                        case TensorNames.ContractVersion: o.Longs![0] = ModelContract.Version; break;
                         case TensorNames.JointCount: o.Longs![0] = 22; break;
                         case TensorNames.KeyFeatureSize: o.Longs![0] = 198; break;
                         case TensorNames.KeyMemory:

@@ -39,6 +39,7 @@ class LoadedModel:
     fps: float = 30.0
     data_description: str = ""
     name: str = ""                 # an exported model's own name (re-export keeps it); "" for a checkpoint
+    contact_threshold: float = 0.5  # a model with a contact head: p ≥ this is planted (chosen on validation)
 
     @property
     def config(self) -> ModelConfig:
@@ -256,11 +257,20 @@ def load_checkpoint(path: str | Path) -> LoadedModel:
     fps, description = float(state.get("fps", 30.0)), str(state.get("data_description", ""))
     if not description:
         fps, description = _describe_training_data(train_config.get("data"), fps)
+    threshold = contact_threshold_of(path, state.get("contact_threshold", 0.5))
     return LoadedModel(model, skeleton, unit_scale, int(state.get("step", 0)),
                        train_config, dict(state.get("validation", {}) or {}),
                        tuple(state.get("facing_local_axis", DEFAULT_FACING_LOCAL_AXIS)),
                        tuple(state.get("facing_target_axis", DEFAULT_FACING_TARGET_AXIS)),
-                       fps, description)
+                       fps, description, threshold)
+
+
+def contact_threshold_of(path, value) -> float:
+    """A stored contact threshold, or CheckpointError: a number strictly between 0 and 1 (a probability that
+    decides planted frames; 0 or 1 would plant every frame or none)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not (math.isfinite(value) and 0 < value < 1):
+        raise CheckpointError(path, f"contact threshold {str(value)[:40]}", "expected a number between 0 and 1")
+    return float(value)
 
 
 def build_model(path: str | Path, state: Dict[str, Any]) -> DeltaInterpolator:
