@@ -262,7 +262,7 @@ def load_checkpoint(path: str | Path) -> LoadedModel:
                        train_config, dict(state.get("validation", {}) or {}),
                        tuple(state.get("facing_local_axis", DEFAULT_FACING_LOCAL_AXIS)),
                        tuple(state.get("facing_target_axis", DEFAULT_FACING_TARGET_AXIS)),
-                       fps, description, threshold)
+                       fps, description, contact_threshold=threshold)
 
 
 def contact_threshold_of(path, value) -> float:

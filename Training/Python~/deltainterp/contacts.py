@@ -28,14 +28,20 @@ import torch
 
 from . import contract as C, safe_output
 from .chained import tail_keys
-from .checkpoint import LoadedModel, read_checkpoint, save_checkpoint_file
+from .checkpoint import LoadedModel, load_checkpoint, read_checkpoint, save_checkpoint_file
+from .decoding import decode_outputs
 from .data import MotionPack, load_pack, split_windows, training_ranges
+from .export import example_inputs, graph_paths
 from .kinematics import forward_kinematics
 from .localize import unlocalize
 from .model import CONTACT_HEADS, DeltaInterpolator
+from .onnx_reference import run_model
 from .objective import (CONTACT_HEIGHT, CONTACT_SPEED, SkeletonTensors, _network_inputs, leg_length, make_batch,
                         predict)
 from .sampler import TransitionSampler
+from .safe_input import load_onnx
+from .train import WindowSource, run_checkpoint
+from .warm_start import load_exported_model
 
 Tensor = torch.Tensor
 GROUND_PERCENTILE = 5.0                # C# FootSkating.GroundPercentile
@@ -101,7 +107,6 @@ def pack_labels(pack: MotionPack) -> np.ndarray:
 # -- baking with contacts ----------------------------------------------------------------------------------
 def _predict_contacts(model: DeltaInterpolator, batch) -> Tuple[Tensor, Tensor, Tensor]:
     """Localized root, local quaternions and contact probabilities of a batch's query frames."""
-    from .decoding import decode_outputs
     qr, q6, contacts = model(*_network_inputs(model, batch), with_contacts=True)
     geo = batch.base_root.dtype
     root, rot = decode_outputs(model.config.output_delta_mode, batch.base_root, batch.base_rotations,
@@ -257,10 +262,6 @@ def motion_difference(model_path, other_path) -> Dict[str, float]:
     batches of rows with different gaps), graph by graph: the whole graph's `root_position_delta` and
     `rotation_6d_delta`, the keys graph's `key_memory`, and the frame graph's deltas fed each file's own keys
     output. A contact head on a frozen trunk must give 0 up to float rounding in every one."""
-    from .export import example_inputs, graph_paths
-    from .onnx_reference import run_model
-    from .safe_input import load_onnx
-    from .warm_start import load_exported_model
     model = load_exported_model(model_path).model
     graphs = {}
     for name, path in (("model", model_path), ("other", other_path)):
@@ -338,8 +339,6 @@ RESUME_SETTINGS = ("head", "hidden", "batch_size", "lr", "chained_share", "mirro
 def initial_model(path: str, head: str, hidden: int) -> LoadedModel:
     """The model `path` holds (an exported .onnx or a checkpoint) with a fresh contact head on its trunk; a
     contact head it already has is replaced."""
-    from .checkpoint import load_checkpoint
-    from .warm_start import load_exported_model
     base = load_exported_model(path) if str(path).endswith(".onnx") else load_checkpoint(path)
     config = copy.deepcopy(base.config)
     config.contact_head, config.contact_hidden = head, hidden
@@ -368,7 +367,6 @@ def train_contact_head(cfg: ContactTrainConfig, progress: bool = True) -> Path:
     past frames from the network's own fill of the gap before, as a bake feeds them; `--mirror`). Resumable from
     OUT/checkpoint.pt. At the end, chooses the threshold on the validation tails (chained bakes, keys every
     `cfg.every`) and writes it into the checkpoint; `export` then writes the model."""
-    from .train import WindowSource, run_checkpoint
     cfg.check()
     out = Path(cfg.out)
     existing = run_checkpoint(out)

@@ -28,6 +28,7 @@ from .onnx_reference import run_model
 from .sampler import TransitionSampler
 from .skeleton import Skeleton
 from .transition import run_transition
+from .export import export_model
 
 Tensor = torch.Tensor
 SEED = 1234
@@ -234,7 +235,6 @@ def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -
 
 
 def _write_model_fixtures(out: Path, loaded: LoadedModel, name: str, golden_name: str) -> Dict[str, Path]:
-    from .export import export_model
     ckpt = out / f"{name}.pt"
     # Regenerating the repository's fixtures replaces them by design (no --force); each file still goes
     # through a temporary file + rename, so a failure leaves the previous set intact.
