@@ -110,7 +110,7 @@ namespace DeltaInterpolator.Core.Baking
                 }
 
                 int available = Math.Min(Settings.FilledFramesAsContext ? start - first + 1 : KeyRun(sorted, i), Settings.PastFrames);
-                int pastFrames = PastContext.KeyCount(available, Settings.PastFrames, Settings.ShortContext);
+                int pastFrames = PastContext.PastFrames(available, Settings.PastFrames, Settings.ShortContext);
                 if (pastFrames > fit)
                 {
                     pastFrames = fit;
