@@ -38,6 +38,8 @@ namespace DeltaInterpolator.Editor.Baking
             ClipKeyframes,
             /// <summary>The end of one clip and a time in another, with a gap between.</summary>
             TwoClips,
+            /// <summary>A key every N (clip frames, model frames or seconds) of a clip keyed on every frame (mocap), by Core's <see cref="KeyPlanner"/> as the CLI's --every.</summary>
+            EveryN,
         }
 
         [SerializeField] private GameObject? _character;
@@ -53,6 +55,8 @@ namespace DeltaInterpolator.Editor.Baking
         [SerializeField] private float _toTime;
         [SerializeField] private int _gapFrames = 15;
         [SerializeField] private int _pastFrames = 10;
+        [SerializeField] private float _every = 0.5f;
+        [SerializeField] private KeySpacingUnit _everyUnit = KeySpacingUnit.Seconds;
         [NonSerialized] private AnimationClip? _describedClip;
         [NonSerialized] private double _describedRate;
         [NonSerialized] private InbetweeningModel? _ratedModel;
@@ -85,6 +89,19 @@ namespace DeltaInterpolator.Editor.Baking
                     _describedClip = _keyClip;
                     _describedRate = rate;
                     EditorGUILayout.HelpBox(_description, MessageType.Info);
+                }
+            }
+            else if (_source == KeySource.EveryN)
+            {
+                _keyClip = (AnimationClip?)EditorGUILayout.ObjectField("Motion clip", _keyClip, typeof(AnimationClip), false);
+                _every = EditorGUILayout.FloatField("Key every", _every);
+                _everyUnit = (KeySpacingUnit)EditorGUILayout.EnumPopup("Counted in", _everyUnit);
+                if (_keyClip != null && EverySpacing() is KeySpacing spacing)
+                {
+                    InbetweeningModel? model = ModelAsset();
+                    if (_ratedModel != model) _modelRate = FrameRateOf(model); // parsed once per model, not per repaint
+                    _ratedModel = model;
+                    EditorGUILayout.HelpBox(spacing.Describe(1.0 / _keyClip.frameRate, _modelRate), MessageType.Info);
                 }
             }
             else
@@ -130,11 +147,29 @@ namespace DeltaInterpolator.Editor.Baking
             if (ModelAsset() == null) return "Assign a model asset here or in the settings (Create → Delta Interpolator → Model).";
             if (_pastFrames < 1) return "Past keys must be at least 1.";
             if (_source == KeySource.ClipKeyframes) return _keyClip == null ? "Assign the clip whose keyframes are the key poses." : null;
+            if (_source == KeySource.EveryN)
+            {
+                if (_keyClip == null) return "Assign the clip to take key poses from.";
+                return EverySpacing() == null ? "'Key every' must be a positive number (whole for frames)." : null;
+            }
+
             if (_fromClip == null || _toClip == null) return "Assign both clips.";
             if (_gapFrames < 1) return "The gap must be at least one frame.";
             if (_fromTime < 0 || _fromTime > _fromClip.length) return $"'Leave at' must lie in the first clip (0 – {_fromClip.length:0.###} s).";
             if (_toTime < 0 || _toTime > _toClip.length) return $"'Arrive at' must lie in the second clip (0 – {_toClip.length:0.###} s).";
             return null;
+        }
+
+        private KeySpacing? EverySpacing()
+        {
+            try
+            {
+                return new KeySpacing(_every, _everyUnit);
+            }
+            catch (ArgumentOutOfRangeException)
+            {
+                return null;
+            }
         }
 
         private InbetweeningModel? ModelAsset() => _model != null ? _model : _settings != null ? _settings.Model : null;
@@ -212,6 +247,19 @@ namespace DeltaInterpolator.Editor.Baking
 
                         name = clip.name + " (in-betweened)";
                     }
+                    else if (_source == KeySource.EveryN)
+                    {
+                        AnimationClip clip = _keyClip!;
+                        (int[] frames, double[] times) = KeyPlanner.PlanClip(EverySpacing()!.Value, clip.length, clip.frameRate, rate, contract.TrainingMissingFrames.Min);
+                        track = new CharacterPoseTrack(rig, frames[frames.Length - 1] + 1, 1.0 / rate);
+                        progress.Show("Sampling the key poses…", 0f);
+                        using (new AnimationModeScope())
+                        {
+                            ClipSampler.SampleInto(track, character, bones, clip, frames, times);
+                        }
+
+                        name = clip.name + " (in-betweened)";
+                    }
                     else
                     {
                         TransitionKeyPlan plan = TransitionKeyPlan.Create(_fromTime, _toTime, _pastFrames, _gapFrames, rate);
@@ -241,8 +289,10 @@ namespace DeltaInterpolator.Editor.Baking
                     var methods = new List<BakeMethod> { model };
                     if (_alsoSlerp) methods.Add(BakeMethod.Slerp(_lockFeet));
                     BakeRun run = CharacterBake.Run(contract, track, jointMap, methods, progress);
-                    var warnings = run.Methods[0].Plan.Warnings;
-                    if (warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the keys", string.Join("\n", warnings), "Save anyway", "Cancel"))
+                    // The plan's warnings (keys) and the run's (e.g. foot locking skipped on a rig whose legs cannot be bent).
+                    var warnings = new List<string>(run.Methods[0].Plan.Warnings);
+                    warnings.AddRange(run.Warnings);
+                    if (warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the bake", string.Join("\n", warnings), "Save anyway", "Cancel"))
                     {
                         return;
                     }

@@ -4,6 +4,7 @@ using System.IO;
 using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.BvhImport;
 using DeltaInterpolator.Core.IO;
+using DeltaInterpolator.Core.Retargeting;
 using UnityEditor.AssetImporters;
 using UnityEngine;
 
@@ -19,12 +20,17 @@ namespace DeltaInterpolator.Editor.Importers
     /// All conversion is Core's (<see cref="BvhClipImport"/>, tested without Unity); this class only builds
     /// the objects and reports a file that cannot be read as an import error naming the file and line.
     /// </remarks>
-    [ScriptedImporter(1, "bvh")]
+    // Version 2: Z-up files are stood on Y (Up Axis), so files imported before are imported again.
+    [ScriptedImporter(2, "bvh")]
     public sealed class BvhImporter : ScriptedImporter
     {
         /// <summary>Metres per unit of the file; 0 tells the unit from the skeleton's size (centimetres, metres, inches, CMU units, …).</summary>
         [Tooltip("Metres per unit of the file. 0: tell it from the skeleton's leg length (centimetres, metres, millimetres, inches, CMU units).")]
         public float metresPerUnit;
+
+        /// <summary>The file's up axis, as <c>inbetween --up</c>: Auto decides from the file; a Z-up file is stood on Unity's Y up.</summary>
+        [Tooltip("Which axis is up in the file. Auto: decided from the rest pose (feet to head) and the motion's floor; Z: a Z-up file (Blender, 3ds Max) is turned onto Y up; Y: taken as it is. The import log says what was decided when the file was turned.")]
+        public UpAxis upAxis = UpAxis.Auto;
 
         /// <inheritdoc />
         public override void OnImportAsset(AssetImportContext ctx)
@@ -32,7 +38,7 @@ namespace DeltaInterpolator.Editor.Importers
             BvhImportResult import;
             try
             {
-                import = BvhClipImport.ImportFile(ctx.assetPath, metresPerUnit);
+                import = BvhClipImport.ImportFile(ctx.assetPath, metresPerUnit, upAxis);
             }
             catch (Exception e) when (e is DataFormatException || e is InputPathException || e is IOException || e is UnauthorizedAccessException)
             {
@@ -41,6 +47,8 @@ namespace DeltaInterpolator.Editor.Importers
                 return;
             }
 
+            // The console says what was decided whenever the file was turned (a Y-up file is imported as before, silently).
+            if (import.Turned && import.UpAxis != null) ctx.LogImportWarning(ctx.assetPath + ": " + import.UpAxis);
             GameObject figure = BvhFigure.Build(import, out Transform[] joints);
             Avatar? human = BvhFigure.BuildHumanoid(import, figure, out string? problem);
             if (problem != null) ctx.LogImportWarning(problem);

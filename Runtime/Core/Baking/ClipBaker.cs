@@ -134,23 +134,23 @@ namespace DeltaInterpolator.Core.Baking
             {
                 if (longGaps.Count > 0)
                 {
-                    warnings.Add($"{Describe(longGaps)} longer than the {range.Max} missing frames {Settings.Name} was trained on at most ({range.Min}..{range.Max}); baked anyway, quality may drop — add keys to shorten them");
+                    warnings.Add($"{Count(longGaps)} longer than the {range.Max} missing frames {Settings.Name} was trained on at most ({range.Min}..{range.Max}): {List(longGaps)}. Baked anyway; quality may drop, so add keys to shorten them.");
                 }
 
                 if (shortGaps.Count > 0)
                 {
-                    warnings.Add($"{Describe(shortGaps)} shorter than the {range.Min} missing frames {Settings.Name} was trained on at least ({range.Min}..{range.Max}); baked anyway");
+                    warnings.Add($"{Count(shortGaps)} shorter than the {range.Min} missing frames {Settings.Name} was trained on at least ({range.Min}..{range.Max}): {List(shortGaps)}. Baked anyway.");
                 }
             }
 
             if (pastOutside.Count > 0 && Settings.TrainedPastFrames is { } trained)
             {
-                warnings.Add($"{DescribePast(pastOutside)} outside the {trained.Min}..{trained.Max} past keys {Settings.Name} was trained on; baked anyway");
+                warnings.Add($"{Count(pastOutside)} fed a number of past keys outside the {trained.Min}..{trained.Max} {Settings.Name} was trained on: {ListPast(pastOutside)}. Baked anyway.");
             }
 
             if (capped.Count > 0)
             {
-                warnings.Add($"{Describe(capped)} too long for {Settings.PastFrames} past keys within frame index {Settings.MaxFrameIndex}; fed with fewer past keys");
+                warnings.Add($"{Count(capped)} too long for {Settings.PastFrames} past keys within frame index {Settings.MaxFrameIndex}: {List(capped)}. Fed with fewer past keys.");
             }
 
             return new BakePlan(frameCount, sorted, gaps.ToArray(), warnings.ToArray());
@@ -276,23 +276,20 @@ namespace DeltaInterpolator.Core.Baking
             return run;
         }
 
-        private static string Describe(List<BakeGap> gaps)
+        // Warnings read as sentences: "2 gaps are shorter than … (5..39): keys 450–454 (3 missing), keys …. Baked anyway."
+        private static string Count(List<BakeGap> gaps) => gaps.Count == 1 ? "1 gap is" : gaps.Count.ToString(CultureInfo.InvariantCulture) + " gaps are";
+
+        private static string List(List<BakeGap> gaps)
         {
             var sb = new StringBuilder();
-            sb.Append(gaps.Count == 1 ? "1 gap is" : gaps.Count.ToString(CultureInfo.InvariantCulture) + " gaps are");
-            sb.Append(" (");
-            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey}: {g.MissingFrames} missing");
-            sb.Append(')');
+            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey} ({g.MissingFrames} missing)");
             return sb.ToString();
         }
 
-        private static string DescribePast(List<BakeGap> gaps)
+        private static string ListPast(List<BakeGap> gaps)
         {
             var sb = new StringBuilder();
-            sb.Append(gaps.Count == 1 ? "1 gap is fed " : gaps.Count.ToString(CultureInfo.InvariantCulture) + " gaps are fed ");
-            sb.Append("a number of past keys (");
-            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey}: {g.PastFrames}");
-            sb.Append(')');
+            AppendList(sb, gaps, g => $"keys {g.StartKey}–{g.EndKey} ({g.PastFrames} past keys)");
             return sb.ToString();
         }
 

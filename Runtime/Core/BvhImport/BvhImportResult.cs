@@ -11,6 +11,12 @@ namespace DeltaInterpolator.Core.BvhImport
     /// </summary>
     public sealed class BvhImportResult
     {
+        /// <summary>What the file's up axis was taken to be (<see cref="Retargeting.UpAxisDecision.Description"/>), or null when the file has no humanoid joints to judge by.</summary>
+        public string? UpAxis { get; internal set; }
+
+        /// <summary>True when the file was turned onto Y up (a Z-up rest skeleton or world).</summary>
+        public bool Turned { get; internal set; }
+
         internal BvhImportResult(
             string sourceName,
             string name,

@@ -28,7 +28,7 @@ namespace DeltaInterpolator.Core.Characters
     public sealed class CharacterRig
     {
         /// <summary>The largest angle (degrees) a mapped bone of the reference pose may point away from the model's T-pose.</summary>
-        public const double DefaultMaxBoneDeviationDegrees = 25.0;
+        public const double DefaultMaxBoneDeviationDegrees = BoneDirections.DefaultMaxDegrees;
 
         private readonly string[] _names;
         private readonly int[] _parents;

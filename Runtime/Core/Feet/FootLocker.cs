@@ -324,7 +324,7 @@ namespace DeltaInterpolator.Core.Feet
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                double foot = leg.HasToe ? Vector3D.Read(rig.Skeleton.OffsetSpan, 3 * leg.Toe).Length : 0;
+                double foot = leg.HasToe ? rig.RestLength(leg.Ankle, leg.Toe) : 0;
                 heights[2 * side] = (0.5 * foot) / rig.LegLength + 0.01;
                 heights[2 * side + 1] = 0.01;
             }

@@ -90,7 +90,7 @@ namespace DeltaInterpolator.Core.Feet
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                _legReach[side] = Vector3D.Read(s.OffsetSpan, 3 * leg.Knee).Length + Vector3D.Read(s.OffsetSpan, 3 * leg.Ankle).Length;
+                _legReach[side] = rig.RestLength(leg.Hip, leg.Knee) + rig.RestLength(leg.Knee, leg.Ankle);
             }
 
             FootLocker.StandingHeights(rig, _maxPlantedHeight);

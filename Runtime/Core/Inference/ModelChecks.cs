@@ -183,9 +183,11 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             int largest = contract.LargestFrameIndex;
-            if (pastFrames + missingFrames > largest)
+            // In long: P + n of two ints past 2^31 − 1 wrapped to a negative sum that passed.
+            long span = (long)pastFrames + missingFrames;
+            if (span > largest)
             {
-                report.Error(src, $"P + n = {pastFrames} + {missingFrames} = {pastFrames + missingFrames} exceeds the model's largest frame index {largest}",
+                report.Error(src, $"P + n = {pastFrames} + {missingFrames} = {span} exceeds the model's largest frame index {largest}",
                     "expected P + n within the model's frame embeddings; use fewer past keys or split the gap");
             }
 

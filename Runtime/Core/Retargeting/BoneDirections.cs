@@ -52,6 +52,16 @@ namespace DeltaInterpolator.Core.Retargeting
             return deviation;
         }
 
+        /// <summary>The largest angle (degrees) a mapped bone may point from the model's T-pose: one number for the CLI and the component.</summary>
+        public const double DefaultMaxDegrees = 25.0;
+
+        /// <summary>
+        /// The bones compared in a reference pose that is not declared a T-pose (any rig file the CLI reads):
+        /// spine, neck and legs. Arms are left out because retargeting aligns any arm pose (arms-down rest poses
+        /// retarget well), and feet and toes because rigs model them at any angle.
+        /// </summary>
+        public static IReadOnlyList<string> UprightBones { get; } = new[] { "Spine", "Spine1", "Spine2", "Neck", "LeftUpLeg", "LeftLeg", "RightUpLeg", "RightLeg" };
+
         /// <summary>
         /// Refuses a source reference pose in which a mapped bone points more than
         /// <paramref name="maxDegrees"/> away from <paramref name="declared"/>, naming every such bone
@@ -61,8 +71,10 @@ namespace DeltaInterpolator.Core.Retargeting
         /// <param name="declared">The target's declared reference pose the map was created with.</param>
         /// <param name="maxDegrees">The largest angle allowed.</param>
         /// <param name="sourceName">The source's name or file, for the message.</param>
+        /// <param name="only">The target joints whose bones are compared (<see cref="UprightBones"/> for a reference
+        /// not declared a T-pose), or null for every bone (a reference declared a T-pose: the component's avatar).</param>
         /// <exception cref="JointMapException">One or more bones point too far away.</exception>
-        public static void RequireTPose(SkeletonMap map, ReferencePose declared, double maxDegrees, string sourceName)
+        public static void RequireTPose(SkeletonMap map, ReferencePose declared, double maxDegrees, string sourceName, IReadOnlyList<string>? only = null)
         {
             if (!(maxDegrees > 0) || double.IsInfinity(maxDegrees)) throw new ArgumentOutOfRangeException(nameof(maxDegrees), maxDegrees, "expected a positive number of degrees");
             double[] deviation = Deviations(map, declared);
@@ -71,14 +83,28 @@ namespace DeltaInterpolator.Core.Retargeting
             {
                 double degrees = deviation[j] * 180.0 / Math.PI;
                 if (!(degrees > maxDegrees)) continue;
+                if (only != null && !Contains(only, map.Target.Names[j])) continue;
                 string source = map.Source.Names[map.SourceJointOf(j)];
                 off.Add(string.Format(CultureInfo.InvariantCulture, "{0} ({1}) {2:0}°", source, map.Target.Names[j], degrees));
             }
 
             if (off.Count == 0) return;
+            if (only != null)
+            {
+                throw new JointMapException(sourceName ?? "<source>",
+                    $"in the reference pose {off.Count} spine, neck or leg bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's standing pose: {string.Join(", ", off)}",
+                    "expected a standing humanoid (legs down, spine and neck up); a rig that is not humanoid cannot be mapped, a wrong bone in the joint map is fixed with --map, and a reference pose that does not stand is replaced with --reference-frame naming a standing frame (or --up for a file lying along Z)");
+            }
+
             throw new JointMapException(sourceName ?? "<source>",
                 $"in the reference pose {off.Count} bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's T-pose: {string.Join(", ", off)}",
                 "expected a T-pose reference (legs straight down, arms straight out sideways, spine and head up); choose the avatar's T-pose, a bind pose in T-pose or a T-pose frame of a clip");
+        }
+
+        private static bool Contains(IReadOnlyList<string> names, string name)
+        {
+            foreach (string n in names) if (string.Equals(n, name, StringComparison.Ordinal)) return true;
+            return false;
         }
     }
 }

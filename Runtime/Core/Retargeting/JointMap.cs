@@ -132,10 +132,26 @@ namespace DeltaInterpolator.Core.Retargeting
             "RightShoulder", "RightShoulder", "RightArm", "RightUpperArm", "RightForeArm", "RightLowerArm", "RightHand", "RightHand",
         });
 
-        /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
-        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid, Poser };
+        /// <summary>
+        /// 3ds Max Biped rigs as BVH exporters write them (<c>Bip01_Pelvis</c>, <c>Bip01_L_Thigh</c>, …; spaces become
+        /// underscores). Biped hangs the thighs under <c>Bip01_Spine</c>, so the hips follow the chain
+        /// <c>Bip01_Pelvis</c> → <c>Bip01_Spine</c> and the model's three spine joints map to Spine1..Spine3 (a rig
+        /// with two spine links makes Spine2 up); the clavicles hang under the neck, which the map carries. The
+        /// root node <c>Bip01</c> above the pelvis is unmapped.
+        /// </summary>
+        public static JointMap Biped { get; } = Build("biped", new[]
+        {
+            "Hips", "Bip01_Pelvis|Bip01_Spine", "LeftUpLeg", "Bip01_L_Thigh", "LeftLeg", "Bip01_L_Calf", "LeftFoot", "Bip01_L_Foot", "LeftToe", "Bip01_L_Toe0",
+            "RightUpLeg", "Bip01_R_Thigh", "RightLeg", "Bip01_R_Calf", "RightFoot", "Bip01_R_Foot", "RightToe", "Bip01_R_Toe0",
+            "Spine", "Bip01_Spine1", "Spine1", "Bip01_Spine2", "Spine2", "Bip01_Spine3", "Neck", "Bip01_Neck", "Head", "Bip01_Head",
+            "LeftShoulder", "Bip01_L_Clavicle", "LeftArm", "Bip01_L_UpperArm", "LeftForeArm", "Bip01_L_Forearm", "LeftHand", "Bip01_L_Hand",
+            "RightShoulder", "Bip01_R_Clavicle", "RightArm", "Bip01_R_UpperArm", "RightForeArm", "Bip01_R_Forearm", "RightHand", "Bip01_R_Hand",
+        });
 
-        /// <summary>The built-in map called <paramref name="name"/> (lafan1, cmu, mixamo, unity-humanoid, poser), or null.</summary>
+        /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
+        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid, Poser, Biped };
+
+        /// <summary>The built-in map called <paramref name="name"/> (lafan1, cmu, mixamo, unity-humanoid, poser, biped), or null.</summary>
         public static JointMap? Named(string name)
         {
             foreach (JointMap map in BuiltIn) if (string.Equals(map.Name, name, StringComparison.OrdinalIgnoreCase)) return map;

@@ -56,10 +56,13 @@ namespace DeltaInterpolator.Core.Retargeting
         private readonly double[] _scratchRotations;
 
         private readonly bool[] _synthesized;     // target joint → true when the source lacks it (rigid child of its parent)
+        private readonly QuaternionD _world;      // the source motion's world → the model's Y-up world (identity for Y-up files)
 
-        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, MapChains chains, double? rootScale, string sourceName)
+        private SkeletonMap(ReferencePose source, ReferencePose target, JointMap map, MapChains chains, double? rootScale, string sourceName, UpAxisDecision? up)
         {
             SourceReference = source;
+            Up = up;
+            _world = up?.MotionToYUp ?? QuaternionD.Identity;
             int[] sourceOf = chains.SourceOf, sourceFirst = chains.SourceFirst;
             bool[] synthesized = chains.Synthesized;
             _synthesized = synthesized;
@@ -105,8 +108,11 @@ namespace DeltaInterpolator.Core.Retargeting
             if (rootScale == null && (!(SourceLegLength > 0) || !(TargetLegLength > 0)))
             {
                 // Named by the file whose pose it is (the map's name alone would hide which input is at fault).
-                throw new JointMapException(sourceName, $"the reference poses give leg lengths {SourceLegLength:G4} (source) and {TargetLegLength:G4} (target) with joint map '{map.Name}'",
-                    "expected reference poses standing upright (Y up) with joints below the root; name a standing frame as the reference");
+                double standing = LegLengths.Measure(target, measured.ToArray(), 0);
+                throw new JointMapException(sourceName, string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                    "the reference pose does not stand on Y: its hips are {0:0.###} (file units) above its lowest mapped joint, so the model's T-pose turned to match it has its hips {1:0.###} above its feet instead of {2:0.###} (joint map '{3}')",
+                    SourceLegLength, TargetLegLength, standing, map.Name),
+                    "expected a reference pose standing upright on Y with the feet below the hips; name a standing frame with --reference-frame, or pass the --up (auto, y or z) that matches the file");
             }
 
             RootScale = rootScale ?? TargetLegLength / SourceLegLength;
@@ -130,11 +136,14 @@ namespace DeltaInterpolator.Core.Retargeting
             UnmappedSourceJoints = unmapped;
         }
 
-        /// <summary>The source skeleton's reference pose.</summary>
+        /// <summary>The source skeleton's reference pose (stood on Y when <see cref="Up"/> turned it).</summary>
         public ReferencePose SourceReference { get; }
 
         /// <summary>The target skeleton's reference pose after alignment to the source's (the declared pose with corrected bone directions).</summary>
         public ReferencePose TargetReference { get; }
+
+        /// <summary>The up axes the source was read with, or null when none was decided (a Y-up source).</summary>
+        public UpAxisDecision? Up { get; }
 
         /// <summary>The joint correspondence used.</summary>
         public JointMap Map { get; }
@@ -185,8 +194,9 @@ namespace DeltaInterpolator.Core.Retargeting
         /// <param name="map">The correspondence; null picks the best built-in one (<see cref="JointMap.Detect"/>).</param>
         /// <param name="sourceName">The source's file or name, for messages.</param>
         /// <param name="rootScale">Target units per source unit for the root's position; null (the default) for the ratio of leg lengths.</param>
+        /// <param name="up">The source's up axes (<see cref="UpAxisDecision.Decide"/>): its reference pose is stood on Y and its motion turned to Y up on the way to the target (and back); null for a Y-up source.</param>
         /// <exception cref="JointMapException">Target joints are missing from the source (all named), or a chain does not fit the source's hierarchy.</exception>
-        public static SkeletonMap Create(ReferencePose source, ReferencePose target, JointMap? map, string sourceName, double? rootScale = null)
+        public static SkeletonMap Create(ReferencePose source, ReferencePose target, JointMap? map, string sourceName, double? rootScale = null, UpAxisDecision? up = null)
         {
             if (rootScale.HasValue && (!(rootScale.Value > 0) || double.IsInfinity(rootScale.Value)))
             {
@@ -199,7 +209,7 @@ namespace DeltaInterpolator.Core.Retargeting
             Skeleton ss = source.Skeleton, ts = target.Skeleton;
             map ??= JointMap.Detect(ss, ts);
             MapChains chains = MapChains.Resolve(ss, ts, map, sourceName);
-            return new SkeletonMap(source, target, map, chains, rootScale, sourceName);
+            return new SkeletonMap(up == null ? source : up.Turn(source), target, map, chains, rootScale, sourceName, up);
         }
 
         /// <summary>
@@ -252,7 +262,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 QuaternionD q;
                 if (j == 0)
                 {
-                    q = Quaternions.Multiply(g, _correction[0]);
+                    q = Quaternions.Multiply(_world, Quaternions.Multiply(g, _correction[0]));
                 }
                 else
                 {
@@ -264,7 +274,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 Quaternions.Normalize(q).Write(targetLocalRotations, 4 * j);
             }
 
-            (RootScale * Vector3D.Read(gPos, 3 * _sourceOf[0])).Write(targetRootPosition, 0);
+            (RootScale * Quaternions.Apply(_world, Vector3D.Read(gPos, 3 * _sourceOf[0]))).Write(targetRootPosition, 0);
         }
 
         /// <summary>
@@ -335,7 +345,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 QuaternionD qt = QuaternionD.Read(targetLocalRotations, 4 * j);
                 // The source-side rotation from s(parent) to s(j) (for the root: its global rotation).
                 QuaternionD wanted = j == 0
-                    ? Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[0]))
+                    ? Quaternions.Multiply(Quaternions.Conjugate(_world), Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[0])))
                     : Quaternions.Multiply(_correction[parents[j]], Quaternions.Multiply(qt, Quaternions.Conjugate(_correction[j])));
                 QuaternionD above = QuaternionD.Identity;
                 int[] carried = _carried[j];
@@ -344,7 +354,7 @@ namespace DeltaInterpolator.Core.Retargeting
             }
 
             // The root: place the source root so that s(root) lands at the target root ÷ scale.
-            Vector3D hips = (1.0 / RootScale) * targetRootPosition;
+            Vector3D hips = (1.0 / RootScale) * Quaternions.Apply(Quaternions.Conjugate(_world), targetRootPosition);
             int[] path = _carried[0];
             if (path.Length == 0)
             {

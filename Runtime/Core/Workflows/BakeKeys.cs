@@ -15,11 +15,21 @@ namespace DeltaInterpolator.Core.Workflows
         /// <exception cref="KeyLayoutException">Interval below 1 or too few frames.</exception>
         public static int[] Every(int interval, MotionClip clip, int first, ModelContract contract)
         {
-            // Rig frames per model frame (CMU at 120 fps: 4; BVH files round their frame time, so 4.0002 means 4),
-            // and one more where it is above 1, so that rounding to model frames can never put two keys on one frame.
-            double ratio = 1.0 / (contract.FramesPerSecond * clip.FrameTime);
-            int spacing = ratio <= 1 + 1e-3 ? 1 : (int)Math.Ceiling(ratio - 1e-3) + 1;
-            return KeyFrames.Every(interval, clip.FrameCount, first, spacing);
+            if (interval < 1) throw new KeyLayoutException($"a key every {interval} frames", "expected an interval of at least 1 frame");
+            return Every(new KeySpacing(interval, KeySpacingUnit.InputFrames), clip, first, contract);
+        }
+
+        /// <summary>
+        /// Keys <paramref name="spacing"/> apart (input frames, model frames or seconds) from <paramref name="first"/>
+        /// by <see cref="KeyPlanner"/>, the last gap kept within the model's trained minimum of missing frames
+        /// where the clip allows: the CLI's <c>--every</c> and the editor baker's "every N" share it.
+        /// </summary>
+        /// <exception cref="KeyLayoutException">A spacing below two model frames or too few frames.</exception>
+        public static int[] Every(KeySpacing spacing, MotionClip clip, int first, ModelContract contract)
+        {
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (contract == null) throw new ArgumentNullException(nameof(contract));
+            return KeyPlanner.Plan(spacing, clip.FrameCount, clip.FrameTime, contract.FramesPerSecond, first, contract.TrainingMissingFrames.Min);
         }
     }
 }

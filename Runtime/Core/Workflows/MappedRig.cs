@@ -38,9 +38,10 @@ namespace DeltaInterpolator.Core.Workflows
             _modelFrameTime = modelFrameTime;
             _inputPath = inputPath;
             Description = string.Format(CultureInfo.InvariantCulture,
-                "retargeted with map '{0}' ({1} joints → the model's {2}{6}; reference: {3}; root × {4:0.#####}) at {5:0.##} fps, baked results mapped back onto the input's skeleton and rate",
+                "retargeted with map '{0}' ({1} joints → the model's {2}{6}; reference: {3}; root × {4:0.#####}{7}) at {5:0.##} fps, baked results mapped back onto the input's skeleton and rate",
                 map.Map.Name, map.Source.JointCount, map.Target.JointCount, reference, map.RootScale, 1 / modelFrameTime,
-                map.SynthesizedJoints.Count == 0 ? "" : "; made up (the input lacks them): " + string.Join(", ", map.SynthesizedJoints));
+                map.SynthesizedJoints.Count == 0 ? "" : "; made up (the input lacks them): " + string.Join(", ", map.SynthesizedJoints),
+                map.Up == null ? "" : "; " + map.Up.Description);
         }
 
         /// <inheritdoc />
@@ -76,11 +77,16 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="inputPath">The input's path, for messages.</param>
         /// <param name="jointMap">A user joint map, or null for the best built-in one.</param>
         /// <exception cref="JointMapException">Joints missing.</exception>
+        /// <param name="up">The file's up axis (auto: detected; see <see cref="UpAxisDecision"/>).</param>
         /// <exception cref="MotionRequestException">The reference frame is not a frame of the clip.</exception>
-        public static MappedRig Create(ModelContract contract, MotionClip input, int? referenceFrame, string inputPath, JointMap? jointMap = null)
+        public static MappedRig Create(ModelContract contract, MotionClip input, int? referenceFrame, string inputPath, JointMap? jointMap = null, UpAxis up = UpAxis.Auto)
         {
             ReferencePose source = MotionRetargeting.Reference(input, referenceFrame, "reference frame", inputPath);
-            SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath);
+            jointMap ??= JointMap.Detect(input.Skeleton, contract.Skeleton);
+            UpAxisDecision decided = UpAxisDecision.Decide(up, source, referenceFrame != null, input, jointMap);
+            SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath, null, decided);
+            // The one humanoid rule of the component (BoneDirections), without the arms: a file's reference pose is not declared a T-pose.
+            BoneDirections.RequireTPose(map, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, inputPath, BoneDirections.UprightBones);
             return new MappedRig(map, 1.0 / contract.FramesPerSecond, input.FrameTime, inputPath,
                 referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));
         }
@@ -94,6 +100,7 @@ namespace DeltaInterpolator.Core.Workflows
             CheckKeys(inputKeys, motion.FrameCount);
             int[] modelKeys = ModelKeys(inputKeys, motion.FrameTime);
             MotionClip onModel = _map.ToTarget(motion);
+            if (_map.Up != null) UpAxisDetection.RequireStanding(onModel, _inputPath, _map.Up.Description);
             int frames = modelKeys[modelKeys.Length - 1] + 1;
             int j = _map.Target.JointCount;
             var positions = new double[frames * j * 3];

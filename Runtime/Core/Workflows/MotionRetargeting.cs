@@ -22,6 +22,7 @@ namespace DeltaInterpolator.Core.Workflows
         {
             SkeletonMap toModel = MapToModel(source, sourceName, contract, request);
             MotionClip onModel = toModel.ToTarget(Trim(source, request, sourceName));
+            UpAxisDetection.RequireStanding(onModel, sourceName, toModel.Up!.Description);
             double frameTime = 1.0 / (request.OutputFps ?? contract.FramesPerSecond);
             MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, sourceName) : onModel;
             return new RetargetResult(resampled, toModel, null);
@@ -37,8 +38,12 @@ namespace DeltaInterpolator.Core.Workflows
         {
             SkeletonMap toModel = MapToModel(source, sourceName, contract, request);
             MotionClip onModel = toModel.ToTarget(Trim(source, request, sourceName));
+            UpAxisDetection.RequireStanding(onModel, sourceName, toModel.Up!.Description);
             ReferencePose targetReference = Reference(target, request.TargetReferenceFrame, "target reference frame", targetName);
-            SkeletonMap fromModel = SkeletonMap.Create(targetReference, ReferencePose.ModelTPose(contract.Skeleton), request.Map, targetName);
+            JointMap targetMap = request.Map ?? JointMap.Detect(target.Skeleton, contract.Skeleton);
+            UpAxisDecision targetUp = UpAxisDecision.Decide(request.Up, targetReference, request.TargetReferenceFrame != null, target, targetMap);
+            SkeletonMap fromModel = SkeletonMap.Create(targetReference, ReferencePose.ModelTPose(contract.Skeleton), targetMap, targetName, null, targetUp);
+            BoneDirections.RequireTPose(fromModel, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, targetName, BoneDirections.UprightBones);
             MotionClip onTarget = fromModel.ToSource(onModel, OneFrame(target.Skeleton, targetReference, source.FrameTime));
             if (request.InputFps.HasValue && !request.OutputFps.HasValue) onTarget = MotionResampler.Resample(onTarget, source.FrameTime, sourceName);
             if (request.OutputFps.HasValue) onTarget = MotionResampler.Resample(onTarget, 1.0 / request.OutputFps.Value, sourceName);
@@ -48,7 +53,12 @@ namespace DeltaInterpolator.Core.Workflows
         private static SkeletonMap MapToModel(MotionClip source, string sourceName, ModelContract contract, RetargetRequest request)
         {
             ReferencePose reference = Reference(source, request.ReferenceFrame, "reference frame", sourceName);
-            return SkeletonMap.Create(reference, ReferencePose.ModelTPose(contract.Skeleton), request.Map, sourceName, request.Scale);
+            JointMap map = request.Map ?? JointMap.Detect(source.Skeleton, contract.Skeleton);
+            UpAxisDecision up = UpAxisDecision.Decide(request.Up, reference, request.ReferenceFrame != null, source, map);
+            SkeletonMap toModel = SkeletonMap.Create(reference, ReferencePose.ModelTPose(contract.Skeleton), map, sourceName, request.Scale, up);
+            // The one humanoid rule of the component (BoneDirections), without the arms: a file's reference pose is not declared a T-pose.
+            BoneDirections.RequireTPose(toModel, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, sourceName, BoneDirections.UprightBones);
+            return toModel;
         }
 
         /// <summary>The source's frames from <see cref="RetargetRequest.FromFrame"/> on, at its true frame rate.</summary>

@@ -23,6 +23,9 @@ namespace DeltaInterpolator.Core.Workflows
         /// <summary>A user joint map, or null for the best built-in one.</summary>
         public JointMap? Map { get; set; }
 
+        /// <summary>The up axis of the files' worlds (<see cref="UpAxis.Auto"/>: detected per file; see <see cref="UpAxisDecision"/>).</summary>
+        public UpAxis Up { get; set; } = UpAxis.Auto;
+
         /// <summary>For a target rig: its frame that is its reference pose, or null for its default pose.</summary>
         public int? TargetReferenceFrame { get; set; }
     }

@@ -17,18 +17,20 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="source">Where it came from, for messages.</param>
         /// <param name="referenceFrame">The clip frame that is the rig's reference pose, or null for its default pose.</param>
         /// <param name="map">A user joint map, or null for the best built-in one.</param>
+        /// <param name="up">The file's up axis (auto: detected; a Z-up file on the model's skeleton goes through a map).</param>
         /// <exception cref="JointMapException">The rig cannot be mapped (joints missing).</exception>
         /// <exception cref="MotionRequestException">The reference frame is not a frame of the clip.</exception>
-        public static IRigRetargeting For(ModelContract contract, MotionClip clip, string source, int? referenceFrame = null, JointMap? map = null)
+        public static IRigRetargeting For(ModelContract contract, MotionClip clip, string source, int? referenceFrame = null, JointMap? map = null, UpAxis up = UpAxis.Auto)
         {
             var report = new ModelCheckReport();
             ModelChecks.Skeleton(contract, clip.Skeleton, source, report);
-            if (!report.HasErrors && referenceFrame == null && map == null && SameRig.AtModelRate(contract, clip.FrameTime))
+            if (!report.HasErrors && referenceFrame == null && map == null && SameRig.AtModelRate(contract, clip.FrameTime)
+                && UpAxisDecision.Decide(up, ReferencePose.Default(clip.Skeleton), false, clip, JointMap.Lafan1).IsIdentity)
             {
                 return new SameRig(contract, clip, source);
             }
 
-            return MappedRig.Create(contract, clip, referenceFrame, source, map);
+            return MappedRig.Create(contract, clip, referenceFrame, source, map, up);
         }
     }
 }

@@ -188,6 +188,42 @@ namespace DeltaInterpolator.Tests.Retargeting
             return new MotionClip(sk, frames, frameTime, positions, rotations);
         }
 
+        /// <summary>
+        /// The same motion on a skeleton whose zero pose is <paramref name="reference"/> (each joint's rest frame
+        /// turned to the reference's global rotation): world positions are unchanged, so a tool that takes the
+        /// zero pose as the reference (the CLI's default) sees the pose the generated rig means.
+        /// </summary>
+        public static MotionClip WithRestPose(MotionClip motion, ReferencePose reference)
+        {
+            Skeleton s = motion.Skeleton;
+            int n = s.JointCount;
+            var offsets = new double[3 * n];
+            for (int j = 0; j < n; j++)
+            {
+                int p = s.Parents[j];
+                Vector3D o = Vector3D.Read(s.OffsetSpan, 3 * j);
+                (p < 0 ? o : Quaternions.Apply(reference.GlobalRotation(p), o)).Write(offsets, 3 * j);
+            }
+
+            var rest = new Skeleton(s.Names, s.Parents, offsets);
+            var positions = new double[motion.LocalPositions.Length];
+            var rotations = new double[motion.LocalRotations.Length];
+            for (int f = 0; f < motion.FrameCount; f++)
+            {
+                Vector3D.Read(motion.LocalPositions, motion.PositionIndex(f, 0)).Write(positions, f * n * 3);
+                for (int j = 0; j < n; j++)
+                {
+                    if (j > 0) Vector3D.Read(offsets, 3 * j).Write(positions, (f * n + j) * 3);
+                    int p = s.Parents[j];
+                    QuaternionD q = QuaternionD.Read(motion.LocalRotations, motion.RotationIndex(f, j));
+                    QuaternionD left = p < 0 ? q : Quaternions.Multiply(reference.GlobalRotation(p), q);
+                    Quaternions.Normalize(Quaternions.Multiply(left, Quaternions.Conjugate(reference.GlobalRotation(j)))).Write(rotations, (f * n + j) * 4);
+                }
+            }
+
+            return new MotionClip(rest, motion.FrameCount, motion.FrameTime, positions, rotations);
+        }
+
         /// <summary>Global positions of every frame (FK with every joint's local translation).</summary>
         public static double[] GlobalPositions(MotionClip clip)
         {

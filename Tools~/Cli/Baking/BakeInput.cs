@@ -40,16 +40,16 @@ namespace DeltaInterpolator.Cli.Baking
             return map;
         }
 
-        /// <summary>Every <paramref name="interval"/> frames from <paramref name="first"/> (<see cref="BakeKeys.Every"/>).</summary>
-        public static int[] Every(int interval, MotionClip motion, int first, ModelContract contract, string input)
+        /// <summary>Keys <paramref name="spacing"/> apart from <paramref name="first"/> (<see cref="BakeKeys.Every(KeySpacing, MotionClip, int, ModelContract)"/>).</summary>
+        public static int[] Every(KeySpacing spacing, MotionClip motion, int first, ModelContract contract, string input)
         {
             try
             {
-                return BakeKeys.Every(interval, motion, first, contract);
+                return BakeKeys.Every(spacing, motion, first, contract);
             }
             catch (KeyLayoutException e)
             {
-                throw new CliErrors.UsageException($"{input}: --every {interval}: {e.Message}");
+                throw new CliErrors.UsageException($"{input}: --every {spacing}: {e.Message}");
             }
         }
 
@@ -76,11 +76,11 @@ namespace DeltaInterpolator.Cli.Baking
         /// </summary>
         /// <exception cref="CliErrors.UsageException">The keys or the rig do not work; the message names <paramref name="input"/>.</exception>
         public static BakeRun Bake(BvhAnimation animation, string input, int[] keys, ModelContract contract, IReadOnlyList<BakeMethod> methods,
-            int? referenceFrame, JointMap? map, bool quiet = false)
+            int? referenceFrame, JointMap? map, bool quiet = false, UpAxis up = UpAxis.Auto)
         {
             try
             {
-                IRigRetargeting rig = RigRetargeting.For(contract, animation.Motion, input, referenceFrame, map);
+                IRigRetargeting rig = RigRetargeting.For(contract, animation.Motion, input, referenceFrame, map, up);
                 if (quiet) return InbetweenBake.Run(animation.Motion, keys, rig, methods);
                 BakeRun? run = null;
                 IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings

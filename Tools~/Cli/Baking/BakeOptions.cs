@@ -27,10 +27,10 @@ namespace DeltaInterpolator.Cli.Baking
             HelpName = "F,F,...",
         };
 
-        public readonly Option<int?> _every = new Option<int?>("--every")
+        public readonly Option<string?> _every = new Option<string?>("--every")
         {
-            Description = "A key every K frames: 0, K, 2K, … and the file's last frame.",
-            HelpName = "K",
+            Description = "A key every K: input frames by default (60), model frames with 'mf' (15mf) or seconds with 's' (0.5s); keys at equal times from the first usable frame, the file's last frame a key, and the last gap kept within the model's trained minimum of missing frames (the key before it moved to the middle of the last two gaps, or dropped). The spacing is printed in all three units.",
+            HelpName = "K|Kmf|Xs",
         };
 
         public readonly Option<string> _method = new Option<string>("--method")
@@ -74,6 +74,8 @@ namespace DeltaInterpolator.Cli.Baking
             Description = "For input on another skeleton (retargeted): the input frame that is its reference pose (e.g. 0 for a CMU file's T-pose); default: its default pose (see 'retarget --help').",
             HelpName = "K",
         };
+
+        public readonly Option<string> _up = UpAxisArgument.Create();
 
         public readonly Option<string?> _map = new Option<string?>("--map")
         {
@@ -128,7 +130,7 @@ namespace DeltaInterpolator.Cli.Baking
 
         public readonly Option<int> _threads = new Option<int>("--threads")
         {
-            Description = "ONNX Runtime intra-op threads.",
+            Description = "ONNX Runtime intra-op threads. At most the processors of this machine (" + Verbs.ModelOptions.MaximumThreads + ").",
             HelpName = "N",
             DefaultValueFactory = _ => 1,
         };
@@ -139,7 +141,7 @@ namespace DeltaInterpolator.Cli.Baking
             command.Arguments.Add(_input);
             foreach (Option o in new Option[] { _keys, _every, _method, _model, _pastPolicy, _context, _out }) command.Options.Add(o);
             _output.AddTo(command);
-            foreach (Option o in new Option[] { _referenceFrame, _map, _inputFps, _fromFrame, _feet, _json, _preview, _png, _stats, _threads }) command.Options.Add(o);
+            foreach (Option o in new Option[] { _referenceFrame, _up, _map, _inputFps, _fromFrame, _feet, _json, _preview, _png, _stats, _threads }) command.Options.Add(o);
         }
 
         /// <summary>The request, every value checked and every output checked writable and distinct from the inputs and each other.</summary>
@@ -148,7 +150,7 @@ namespace DeltaInterpolator.Cli.Baking
             var r = new BakeRequest
             {
                 Input = parse.GetValue(_input)!,
-                Every = parse.GetValue(_every),
+                Every = EveryArgument.Parse(parse.GetValue(_every), "bake"),
                 Method = parse.GetValue(_method)!,
                 OutPath = parse.GetValue(_out)!,
                 Force = parse.GetValue(_output.Force),
@@ -156,6 +158,7 @@ namespace DeltaInterpolator.Cli.Baking
                 Policy = ParsePolicy(parse.GetValue(_pastPolicy)!),
                 Feet = BakeFeet.Parse(parse.GetValue(_feet)!),
                 ReferenceFrame = parse.GetValue(_referenceFrame),
+                Up = UpAxisArgument.Parse(parse.GetValue(_up), "bake"),
             };
             string? keysText = parse.GetValue(_keys);
             if ((keysText == null) == (r.Every == null))
@@ -168,6 +171,12 @@ namespace DeltaInterpolator.Cli.Baking
             if (context != "filled" && context != "keys") throw new CliErrors.UsageException($"inbetween bake: --context '{context}'; expected filled or keys");
             r.FilledContext = context == "filled";
             if (r.Threads < 1) throw new CliErrors.UsageException($"inbetween bake: --threads {r.Threads}; expected 1 or more");
+            if (r.Threads > Verbs.ModelOptions.MaximumThreads)
+            {
+                // As speed and benchmark: 500 threads took 19 s, 2147483647 failed as std::bad_alloc blamed on the model.
+                throw new CliErrors.UsageException($"inbetween bake: --threads {r.Threads} is more than the {Verbs.ModelOptions.MaximumThreads} processors of this machine; expected at most {Verbs.ModelOptions.MaximumThreads} (more threads only compete for the same cores)");
+            }
+
             InputFile.Check(r.Input, "a .bvh file");
             r.ModelPath = parse.GetValue(_model) ?? ShippedModels.Find(ShippedModel);
             InputFile.Check(r.ModelPath, $"an exported model (NAME.onnx), e.g. {ShippedModel}");
@@ -187,14 +196,16 @@ namespace DeltaInterpolator.Cli.Baking
             if (r.FromFrame < 0) throw new CliErrors.UsageException($"inbetween bake: --from-frame {r.FromFrame}; expected a frame index from 0");
             if (keysText != null) r.Keys = ParseKeys(keysText, r.Input);
 
-            // Before any work: the outputs must be writable and must not replace an input or each other.
-            r.OutFull = OutputFile.Check(r.OutPath, r.Force, r.Input, r.ModelPath, r.StatsPath, r.MapPath);
+            // Before any work: the outputs must be writable and must not replace an input or each other. A key
+            // list file (--keys @FILE) is read like the others, so --force never lets an output replace it.
+            string?[] inputs = { r.Input, r.ModelPath, r.StatsPath, r.MapPath, keysText == null ? null : KeyListArgument.FilePath(keysText) };
+            r.OutFull = OutputFile.Check(r.OutPath, r.Force, inputs);
             r.JsonPath = parse.GetValue(_json);
-            r.JsonFull = r.JsonPath == null ? null : OutputFile.Check(r.JsonPath, r.Force, r.Input, r.ModelPath, r.StatsPath, r.MapPath);
+            r.JsonFull = r.JsonPath == null ? null : OutputFile.Check(r.JsonPath, r.Force, inputs);
             if (r.JsonFull != null && string.Equals(r.JsonFull, r.OutFull, StringComparison.Ordinal)) throw new CliErrors.UsageException($"{r.JsonPath}: the same file as --out; expected a different path for --json");
             r.PreviewPath = parse.GetValue(_preview);
             r.PngPath = parse.GetValue(_png);
-            BakePreview.CheckOutputs(r.PreviewPath, r.PngPath, r.JsonFull == null ? new[] { r.OutFull } : new[] { r.OutFull, r.JsonFull }, r.Force, r.Input, r.ModelPath, r.StatsPath, r.MapPath);
+            BakePreview.CheckOutputs(r.PreviewPath, r.PngPath, r.JsonFull == null ? new[] { r.OutFull } : new[] { r.OutFull, r.JsonFull }, r.Force, inputs);
             return r;
         }
 

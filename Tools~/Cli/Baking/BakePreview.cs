@@ -57,6 +57,7 @@ namespace DeltaInterpolator.Cli.Baking
             string title = Path.GetFileName(animation.SourceName) + $", frames {first}–{run.RigKeys[keys.Length - 1]}";
             MotionClip[] clips = { truth, run["SLERP"].OnRig, model };
             PreviewScene scene = PreviewScene.FromClips(title, new[] { ("Ground truth", clips[0]), ("SLERP", clips[1]), ("Model", clips[2]) }, keys, 0);
+            scene.FirstFrame = first;
             MarkPlantedFeet(scene, clips, BakeScores.Feet(run, truth.Skeleton));
             PreviewWriter.WriteHtml(scene, htmlPath);
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB): ground truth, SLERP and model, {2} frames, {3} keys", htmlPath, new FileInfo(htmlPath).Length / 1024.0, scene.FrameCount, keys.Length)));

@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Cli.Baking
     {
         public string Input { get; set; } = "";
         public int[]? Keys { get; set; }
-        public int? Every { get; set; }
+        public Core.Baking.KeySpacing? Every { get; set; }
         public string Method { get; set; } = "model";
         public string ModelPath { get; set; } = "";
         public ShortContextPolicy? Policy { get; set; }
@@ -18,6 +18,7 @@ namespace DeltaInterpolator.Cli.Baking
         public string OutFull { get; set; } = "";
         public bool Force { get; set; }
         public int? ReferenceFrame { get; set; }
+        public Core.Retargeting.UpAxis Up { get; set; }
         public string? MapPath { get; set; }
         public double? InputFps { get; set; }
         public int FromFrame { get; set; }

@@ -22,6 +22,7 @@ namespace DeltaInterpolator.Cli.Retargeting
             table.AddRow("Input", Markup.Escape($"{input}: {source.Skeleton.JointCount} joints, {inClip.FrameCount} frames at {Fps(inClip.FrameTime)} fps"));
             table.AddRow("Reference pose", referenceFrame.HasValue ? $"frame {referenceFrame.Value}"
                 : HasLafanNames(source.Skeleton) ? "the model's T-pose (LaFAN1 joint names and axes)" : "zero pose (all rotations 0)");
+            if (toModel.Up != null) table.AddRow("Up axis", Markup.Escape(toModel.Up.Description + (fromModel?.Up == null ? "" : "; target: " + fromModel.Up.Description)));
             table.AddRow("Joint map", Markup.Escape($"'{toModel.Map.Name}': {toModel.Target.JointCount} model joints from {Mapped(toModel)}"));
             table.AddRow("Made up (synthesized)", Markup.Escape(toModel.SynthesizedJoints.Count == 0 ? "none"
                 : string.Join(", ", toModel.SynthesizedJoints) + ": the input lacks them; each is a rigid child of its parent at the model's T-pose offset"));

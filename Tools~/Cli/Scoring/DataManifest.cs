@@ -12,13 +12,13 @@ namespace DeltaInterpolator.Cli.Scoring
     /// field for field): <c>inbetween-data.json</c> inside the folder, or a <c>NAME.json</c> whose
     /// <c>"folder"</c> names the folder relative to it; <c>defaults</c> and <c>files</c> (globs on the path
     /// relative to the folder, later matches win) with <c>from_frame</c>, <c>reference_frame</c>, <c>fps</c>,
-    /// <c>map</c> and <c>skip</c>; <c>groups</c>, a regex whose group 1 names a file's subject.
+    /// <c>map</c>, <c>skip</c> and <c>up</c> (the file's up axis: "auto", "y" or "z", as <c>--up</c>); <c>groups</c>, a regex whose group 1 names a file's subject.
     /// </summary>
     internal sealed class DataManifest
     {
         public const string FileName = "inbetween-data.json";
         private const long MaxBytes = 1 << 20;
-        private static readonly HashSet<string> FileFields = new HashSet<string>(StringComparer.Ordinal) { "from_frame", "reference_frame", "fps", "map", "skip" };
+        private static readonly HashSet<string> FileFields = new HashSet<string>(StringComparer.Ordinal) { "from_frame", "reference_frame", "fps", "map", "skip", "up" };
         private static readonly HashSet<string> TopFields = new HashSet<string>(StringComparer.Ordinal) { "folder", "licence", "defaults", "files", "groups", "comment" };
 
         private readonly List<KeyValuePair<string, Dictionary<string, JsonElement>>> _files = new List<KeyValuePair<string, Dictionary<string, JsonElement>>>();
@@ -40,8 +40,9 @@ namespace DeltaInterpolator.Cli.Scoring
         /// <summary>One file's facts.</summary>
         public sealed class Entry
         {
-            public Entry(string path, string name, string group, int fromFrame, int? referenceFrame, double? fps, string? map)
+            public Entry(string path, string name, string group, int fromFrame, int? referenceFrame, double? fps, string? map, Core.Retargeting.UpAxis? up = null)
             {
+                Up = up;
                 FilePath = path;
                 Name = name;
                 Group = group;
@@ -58,6 +59,8 @@ namespace DeltaInterpolator.Cli.Scoring
             public int? ReferenceFrame { get; }
             public double? Fps { get; }
             public string? Map { get; }
+            /// <summary>The manifest's "up" for the file, or null when it names none (score's --up then applies).</summary>
+            public Core.Retargeting.UpAxis? Up { get; }
         }
 
         /// <summary>A folder (with its optional manifest) or a manifest naming its folder.</summary>
@@ -84,9 +87,8 @@ namespace DeltaInterpolator.Cli.Scoring
         {
             var result = new List<Entry>();
             string root = System.IO.Path.GetFullPath(Folder);
-            // Bounded depth: a symbolic link that loops back into the folder cannot recurse forever.
-            var files = new List<string>(Directory.EnumerateFiles(root, "*", new EnumerationOptions { RecurseSubdirectories = true, MaxRecursionDepth = 16, AttributesToSkip = 0, IgnoreInaccessible = true }));
-            files.Sort(StringComparer.Ordinal);
+            // Each real folder once: a directory link looping back into the folder adds nothing.
+            List<string> files = DataFolderWalk.Files(root);
             string baseDir = Path == null ? root : System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(Path))!;
             foreach (string file in files)
             {
@@ -113,7 +115,9 @@ namespace DeltaInterpolator.Cli.Scoring
                     if (m.Success && m.Groups.Count > 1) group = m.Groups[1].Value;
                 }
 
-                result.Add(new Entry(file, name, group, from, reference, fps, map));
+                Core.Retargeting.UpAxis? up = settings.TryGetValue("up", out JsonElement u) && u.ValueKind == JsonValueKind.String
+                    ? Core.Retargeting.UpAxes.Parse(u.GetString()) : null;
+                result.Add(new Entry(file, name, group, from, reference, fps, map, up));
             }
 
             return result;
@@ -125,27 +129,8 @@ namespace DeltaInterpolator.Cli.Scoring
             return false;
         }
 
-        /// <summary>Python's fnmatch.fnmatchcase: * and ? match any character ('/' too), [seq] and [!seq] sets.</summary>
-        internal static bool Glob(string pattern, string text)
-        {
-            var rx = new System.Text.StringBuilder("^");
-            for (int i = 0; i < pattern.Length; i++)
-            {
-                char c = pattern[i];
-                if (c == '*') rx.Append(".*");
-                else if (c == '?') rx.Append('.');
-                else if (c == '[' && pattern.IndexOf(']', i + 1) > i + 1)
-                {
-                    int end = pattern.IndexOf(']', i + 2 <= pattern.Length - 1 ? i + 2 : i + 1);
-                    string body = pattern.Substring(i + 1, end - i - 1);
-                    rx.Append('[').Append(body.StartsWith("!", StringComparison.Ordinal) ? "^" + Regex.Escape(body.Substring(1)) : Regex.Escape(body)).Append(']');
-                    i = end;
-                }
-                else rx.Append(Regex.Escape(c.ToString()));
-            }
-
-            return Regex.IsMatch(text, rx.Append('$').ToString(), RegexOptions.Singleline, TimeSpan.FromSeconds(1));
-        }
+        /// <summary>Python's fnmatch.fnmatchcase (<see cref="FileGlob"/>): * and ? match any character ('/' too), [seq] and [!seq] sets.</summary>
+        internal static bool Glob(string pattern, string text) => FileGlob.Parse(pattern).Matches(text);
 
         private static int? Int(Dictionary<string, JsonElement> settings, string key)
             => settings.TryGetValue(key, out JsonElement v) && v.ValueKind == JsonValueKind.Number && v.TryGetInt32(out int i) ? i : (int?)null;
@@ -215,7 +200,13 @@ namespace DeltaInterpolator.Cli.Scoring
             if (element.ValueKind != JsonValueKind.Object) throw new CliErrors.UsageException($"{path}: per-file settings that are not an object; expected {{\"from_frame\": 1, ...}}");
             foreach (JsonProperty p in element.EnumerateObject())
             {
-                if (!FileFields.Contains(p.Name)) throw new CliErrors.UsageException($"{path}: unknown setting \"{TerminalText.Safe(p.Name, 80)}\"; expected from_frame, reference_frame, fps, map, skip");
+                if (!FileFields.Contains(p.Name)) throw new CliErrors.UsageException($"{path}: unknown setting \"{TerminalText.Safe(p.Name, 80)}\"; expected from_frame, reference_frame, fps, map, skip, up");
+                if (p.Name == "up" && p.Value.ValueKind != JsonValueKind.Null
+                    && (p.Value.ValueKind != JsonValueKind.String || p.Value.GetString() is not ("auto" or "y" or "z")))
+                {
+                    throw new CliErrors.UsageException($"{path}: \"up\": {TerminalText.Safe(p.Value.GetRawText(), 40)}; expected \"auto\", \"y\" or \"z\" (or null)");
+                }
+
                 into[p.Name] = p.Value.Clone();
             }
         }

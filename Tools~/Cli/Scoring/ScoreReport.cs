@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Cli.Scoring
     /// <summary><c>score --json</c>: every file's values, the totals per subject and over all files, each method beside its ratio to SLERP.</summary>
     internal static class ScoreReport
     {
-        public static string Json(ScoreSheet sheet, IReadOnlyList<string> modelPaths, int every)
+        public static string Json(ScoreSheet sheet, IReadOnlyList<string> modelPaths, Core.Baking.KeySpacing every)
         {
             int methods = sheet.Methods.Count;
             using var buffer = new MemoryStream();
@@ -49,7 +49,9 @@ namespace DeltaInterpolator.Cli.Scoring
                 }
 
                 w.WriteStartObject();
-                w.WriteNumber("every", every);
+                // A number of input frames as before; another unit as written on the command line ("15mf", "0.5s").
+                if (every.Unit == Core.Baking.KeySpacingUnit.InputFrames) w.WriteNumber("every", every.Value);
+                else w.WriteString("every", every.ToString());
                 w.WriteStartArray("models");
                 foreach (string p in modelPaths) w.WriteStringValue(p);
                 w.WriteEndArray();

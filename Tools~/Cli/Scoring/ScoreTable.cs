@@ -8,14 +8,30 @@ namespace DeltaInterpolator.Cli.Scoring
     /// <summary><c>score</c>'s table: every file, every subject (when there are several) and all files, each method's values and its ratio to SLERP.</summary>
     internal static class ScoreTable
     {
-        public static void Print(ScoreSheet sheet, int every)
+        private static string Unit(Core.Baking.KeySpacing every) => every.Unit switch
+        {
+            Core.Baking.KeySpacingUnit.InputFrames => every.Value.ToString("0", CultureInfo.InvariantCulture) + " input frames",
+            Core.Baking.KeySpacingUnit.ModelFrames => every.Value.ToString("0", CultureInfo.InvariantCulture) + " model frames",
+            _ => every.Value.ToString("0.###", CultureInfo.InvariantCulture) + " s",
+        };
+
+        public static void Print(ScoreSheet sheet, Core.Baking.KeySpacing every)
         {
             int methods = sheet.Methods.Count;
             var table = new Table().Border(TableBorder.Rounded)
-                .Title($"[bold]Keys every {every} input frames[/]: mean joint position error ÷ leg length, and L2Q, over non-key frames (× SLERP in brackets; lower is better)");
+                .Title($"[bold]Keys every {Unit(every)}[/]: mean joint position error ÷ leg length, and L2Q, over non-key frames (× SLERP in brackets; lower is better)");
             table.AddColumn("File");
             table.AddColumn(new TableColumn("Frames").RightAligned());
-            foreach (string n in sheet.Methods) table.AddColumn(new TableColumn(Markup.Escape(n) + " pos / L2Q").RightAligned());
+            // Whole method names in a legend above the table, numbers in the headers: a column narrower than a model's
+            // name would cut it ("DeltaInterpola…"), and two exports differ only at the end of their names.
+            var legend = new List<string>();
+            for (int i = 0; i < methods; i++)
+            {
+                legend.Add(string.Format(CultureInfo.InvariantCulture, "[{0}] {1}", i + 1, sheet.Methods[i]));
+                table.AddColumn(new TableColumn(string.Format(CultureInfo.InvariantCulture, "[[{0}]] pos / L2Q", i + 1)).RightAligned());
+            }
+
+            foreach (string line in legend) AnsiConsole.WriteLine(line);
             void AddRow(string label, IReadOnlyList<double> p, IReadOnlyList<double> q, int frames, bool bold)
             {
                 var cells = new List<string> { bold ? $"[bold]{Markup.Escape(label)}[/]" : Markup.Escape(label), frames.ToString("N0", CultureInfo.InvariantCulture) };

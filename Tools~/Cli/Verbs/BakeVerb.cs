@@ -67,8 +67,13 @@ namespace DeltaInterpolator.Cli.Verbs
             int[] keys = r.Keys != null
                 ? BakeInput.CheckFrom(r.Keys, r.FromFrame, r.Input)
                 : BakeInput.Every(r.Every!.Value, animation.Motion, r.FromFrame, model.Contract, r.Input);
+            if (r.Every.HasValue)
+            {
+                // The spacing in all three units: a bare number is input frames, which mean different times at 30, 60 and 120 fps.
+                AnsiConsole.MarkupLine(Markup.Escape($"keys {r.Every.Value.Describe(animation.Motion.FrameTime, model.Contract.FramesPerSecond)} from frame {r.FromFrame}: {keys.Length} keys"));
+            }
 
-            BakeRun run = BakeInput.Bake(animation, r.Input, keys, model.Contract, BakeInput.ModelAndSlerp(model, r.Policy, r.FilledContext, r.Feet), r.ReferenceFrame, jointMap);
+            BakeRun run = BakeInput.Bake(animation, r.Input, keys, model.Contract, BakeInput.ModelAndSlerp(model, r.Policy, r.FilledContext, r.Feet), r.ReferenceFrame, jointMap, up: r.Up);
             // Before OUT.bvh, the scores or the preview: a NaN or overflow is refused, never written or drawn.
             MotionChecks.RequireFinitePositions(run["Model"].OnRig, r.Input, "the model's result");
             MotionChecks.RequireFinitePositions(run["SLERP"].OnRig, r.Input, "the SLERP result");

@@ -27,7 +27,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Argument<string> _input = new Argument<string>("IN")
         {
-            Description = "The BVH file to retarget (any humanoid: LaFAN1, CMU, Mixamo or Unity names, or --map)",
+            Description = "The BVH file to retarget (any humanoid: " + BuiltInMapNames.List + " joint names, or --map)",
         };
 
         private readonly Option<string> _to = new Option<string>("--to")
@@ -46,7 +46,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<string?> _map = new Option<string?>("--map")
         {
-            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\", \"of\", \"joints\"], …} for names the built-in maps (LaFAN1, CMU, Mixamo, Unity) miss",
+            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\", \"of\", \"joints\"], …} for names the built-in maps (" + BuiltInMapNames.List + ") miss; joints it leaves out take the built-in names, null: a joint the rig lacks, made up (Documentation~/retargeting.md)",
             HelpName = "MAP.json",
         };
 
@@ -55,6 +55,8 @@ namespace DeltaInterpolator.Cli.Verbs
             Description = "The input frame that is its reference pose (e.g. 0 for a CMU file's T-pose); default: the model's T-pose for LaFAN1 joint names, otherwise the zero pose (all rotations 0)",
             HelpName = "K",
         };
+
+        private readonly Option<string> _up = UpAxisArgument.Create();
 
         private readonly Option<int?> _targetReferenceFrame = new Option<int?>("--target-reference-frame")
         {
@@ -101,7 +103,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 "retarget",
                 "Move motion onto the model's skeleton (or another BVH file's), matching every mapped bone's world direction,\n" +
                 "scaling the root by leg length and resampling to the model's frame rate.\n" +
-                "Joints are matched by name (built-in LaFAN1, CMU, Mixamo and Unity HumanBodyBones tables, or --map);\n" +
+                "Joints are matched by name (built-in " + BuiltInMapNames.List + " tables, or --map;\n" +
+                "Documentation~/retargeting.md has the model's 22 joints, the map format and what each refusal means);\n" +
                 "a skeleton missing joints the model needs is refused with their names (exit status 2).\n" +
                 "Example:\n  inbetween retarget Samples~/Demo/cmu_09_12_walk_navigate.bvh --to model --reference-frame 0 --from-frame 1 --out out/walk_on_model.bvh");
             command.Arguments.Add(_input);
@@ -109,6 +112,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_out);
             command.Options.Add(_map);
             command.Options.Add(_referenceFrame);
+            command.Options.Add(_up);
             command.Options.Add(_targetReferenceFrame);
             command.Options.Add(_fps);
             command.Options.Add(_inputFps);
@@ -148,6 +152,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 throw new CliErrors.UsageException($"inbetween retarget: --scale {scale.Value.ToString(CultureInfo.InvariantCulture)}; expected a positive number of model units per input unit");
             }
 
+            UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "retarget");
             RequireFile(input, "the BVH file to retarget");
             if (!toModel) RequireFile(to, "'model' or a BVH file whose skeleton receives the motion");
             if (mapPath != null) RequireFile(mapPath, "a JSON joint map");
@@ -164,7 +169,7 @@ namespace DeltaInterpolator.Cli.Verbs
             var request = new RetargetRequest
             {
                 ReferenceFrame = parse.GetValue(_referenceFrame), FromFrame = fromFrame ?? 0, InputFps = inputFps, OutputFps = fps, Scale = scale,
-                Map = userMap, TargetReferenceFrame = parse.GetValue(_targetReferenceFrame),
+                Map = userMap, TargetReferenceFrame = parse.GetValue(_targetReferenceFrame), Up = up,
             };
             RetargetResult retargeted;
             BvhAnimation result;

@@ -6,6 +6,7 @@ using System.IO;
 using System.Text;
 using DeltaInterpolator.Cli.Baking;
 using DeltaInterpolator.Cli.Scoring;
+using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.IO;
@@ -31,10 +32,10 @@ namespace DeltaInterpolator.Cli.Verbs
             Arity = ArgumentArity.OneOrMore,
         };
 
-        private readonly Option<int> _every = new Option<int>("--every")
+        private readonly Option<string> _every = new Option<string>("--every")
         {
-            Description = "A key every K input frames from each file's first usable frame (as bake --every).",
-            HelpName = "K",
+            Description = "A key every K from each file's first usable frame, as bake --every: input frames by default (60), model frames with 'mf' (15mf) or seconds with 's' (0.5s).",
+            HelpName = "K|Kmf|Xs",
             Required = true,
         };
 
@@ -60,6 +61,8 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly OutputOptions _output = new OutputOptions();
 
+        private readonly Option<string> _up = UpAxisArgument.Create();
+
         /// <inheritdoc />
         public Command CreateCommand()
         {
@@ -75,6 +78,8 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_models);
             command.Options.Add(_only);
             command.Options.Add(_json);
+            _up.Description = UpAxisArgument.Help + " For files whose manifest names no \"up\".";
+            command.Options.Add(_up);
             _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
@@ -83,18 +88,39 @@ namespace DeltaInterpolator.Cli.Verbs
         private int Run(ParseResult parse)
         {
             string[] data = parse.GetValue(_data) ?? Array.Empty<string>();
-            int every = parse.GetValue(_every);
-            if (every < 1) throw new CliErrors.UsageException($"inbetween score: --every {every}; expected 1 or more frames");
+            KeySpacing every = EveryArgument.Parse(parse.GetValue(_every), "score")!.Value;
+            Core.Retargeting.UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "score");
             var models = new List<string>(parse.GetValue(_models) ?? Array.Empty<string>());
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
             foreach (string m in models) Core.IO.InputFile.Check(m, "an exported model (NAME.onnx)");
             string[] only = parse.GetValue(_only) ?? Array.Empty<string>();
+            foreach (string glob in only)
+            {
+                // Python's fnmatch reads a reversed range as empty (it matches nothing): on the command line that is
+                // a typing slip, said now rather than as "no files".
+                string? reversed = FileGlob.Parse(glob).ReversedRange;
+                if (reversed != null) throw new CliErrors.UsageException($"inbetween score: --only '{glob}' has the reversed range {reversed}, which matches nothing; expected a range from low to high, e.g. [a-z]");
+            }
+
             string? jsonPath = parse.GetValue(_json);
             var entries = new List<DataManifest.Entry>();
-            foreach (string d in data) entries.AddRange(DataManifest.Open(d).Entries(only));
-            if (entries.Count == 0) throw new CliErrors.UsageException($"{string.Join(", ", data)}: no BVH files to score; expected *.bvh files (check --only)");
             var inputs = new List<string?>(models);
-            foreach (DataManifest.Entry e in entries) inputs.Add(e.FilePath);
+            foreach (string d in data)
+            {
+                DataManifest manifest = DataManifest.Open(d);
+                entries.AddRange(manifest.Entries(only));
+                // Settings files are inputs as much as the motion: the manifest (NAME.json or DIR/inbetween-data.json),
+                // and a folder's manifest name even when it has none yet (a report written there would become one).
+                inputs.Add(manifest.Path ?? Path.Combine(manifest.Folder, DataManifest.FileName));
+            }
+
+            if (entries.Count == 0) throw new CliErrors.UsageException($"{string.Join(", ", data)}: no BVH files to score; expected *.bvh files (check --only)");
+            foreach (DataManifest.Entry e in entries)
+            {
+                inputs.Add(e.FilePath);
+                inputs.Add(e.Map);
+            }
+
             string? jsonFull = jsonPath == null ? null : OutputFile.Check(jsonPath, parse.GetValue(_output.Force), inputs.ToArray());
 
             var inbetweeners = new List<Inbetweener>();
@@ -116,7 +142,7 @@ namespace DeltaInterpolator.Cli.Verbs
                     var task = ctx.AddTask("Baking files", maxValue: entries.Count);
                     foreach (DataManifest.Entry e in entries)
                     {
-                        sheet.Add(ScoreFile(e, every, inbetweeners));
+                        sheet.Add(ScoreFile(e, every, inbetweeners, up));
                         task.Increment(1);
                     }
                 });
@@ -141,7 +167,7 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         /// <summary>One file baked with every model (and SLERP once, with the first model's keys) and scored per leg length.</summary>
-        private static ScoreRow ScoreFile(DataManifest.Entry e, int every, List<Inbetweener> models)
+        private static ScoreRow ScoreFile(DataManifest.Entry e, KeySpacing every, List<Inbetweener> models, Core.Retargeting.UpAxis up)
         {
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(e.FilePath), e.Fps);
             var position = new double[models.Count + 1];
@@ -155,7 +181,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 JointMap? map = BakeInput.LoadMap(e.Map, animation, models[i].Contract);
                 int[] keys = BakeInput.Every(every, animation.Motion, e.FromFrame, models[i].Contract, e.FilePath);
                 BakeMethod[] methods = i == 0 ? BakeInput.ModelAndSlerp(models[i], null, true, null) : new[] { BakeMethod.Model(models[i]) };
-                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true);
+                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up);
                 BakeScores scores = BakeScores.Measure(animation.Motion, run);
                 leg = scores.LegLength;
                 frames = scores["Model"].Accuracy.Frames;

@@ -45,7 +45,11 @@ namespace DeltaInterpolator.Tests.Cli
             }
 
             var skeleton = new Skeleton(names, generated.Parents, generated.Offsets);
-            MotionClip motion = RetargetFixtures.Motion(new ReferencePose(skeleton, reference.LocalRotations, reference.RootPosition), 40, 1.0 / 60.0, 8, 0.2, "LeftHipJoint");
+            var pose = new ReferencePose(skeleton, reference.LocalRotations, reference.RootPosition);
+            // Rest pose = the generated reference (a standing T-pose): the CLI's default reference is the zero pose,
+            // and issue 30's humanoid rule refuses a zero pose whose spine and legs point anywhere.
+            MotionClip motion = RetargetFixtures.WithRestPose(RetargetFixtures.Motion(pose, 40, 1.0 / 60.0, 8, 0.2, "LeftHipJoint"), pose);
+            skeleton = motion.Skeleton;
             var channels = new BvhChannel[skeleton.JointCount][];
             for (int j = 0; j < channels.Length; j++)
             {

@@ -36,6 +36,7 @@ class LoadedModel:
     facing_target_axis: tuple = DEFAULT_FACING_TARGET_AXIS
     fps: float = 30.0
     data_description: str = ""
+    name: str = ""                 # an exported model's own name (re-export keeps it); "" for a checkpoint
 
     @property
     def config(self) -> ModelConfig:
@@ -290,15 +291,24 @@ def build_model(path: str | Path, state: Dict[str, Any]) -> DeltaInterpolator:
 
 
 def _describe_training_data(pack_path, fps: float) -> Tuple[float, str]:
-    """'LaFAN1 subjects 1-4 (24 files)' and the frame rate, from the training pack when it is at hand
-    (train.py does not store them in the checkpoint)."""
-    description = "LaFAN1 subjects 1-4"
-    if pack_path and Path(pack_path).exists():
-        import numpy as np
-        with np.load(pack_path, allow_pickle=False) as z:
-            if "description" in z.files and str(z["description"]):
-                description = str(z["description"])  # a pack of any humanoid BVH says what it holds
-            else:
-                description += f" ({len(z['files'])} files)"
-            fps = round(1.0 / float(z["frame_time"]), 3)
+    """What the run was trained on and the frame rate, from the training pack when it is at hand (train.py
+    does not store them in the checkpoint): the pack's own description, or, for a LaFAN1 pack (which has none),
+    its subjects read from its file names. Never a data set the run was not trained on: without the pack the
+    description says so (issue 30: a fine-tune was exported as "LaFAN1 subjects 1-4")."""
+    if not pack_path:
+        return fps, "not recorded (the checkpoint names no training pack)"
+    if not Path(pack_path).exists():
+        return fps, f"not recorded (its training pack {Path(pack_path).name} is not at hand)"
+    import re
+
+    import numpy as np
+    with np.load(pack_path, allow_pickle=False) as z:
+        files = [str(f) for f in z["files"]]
+        if "description" in z.files and str(z["description"]):
+            description = str(z["description"])  # a pack of any humanoid BVH says what it holds
+        else:
+            subjects = sorted({int(m.group(1)) for f in files for m in [re.search(r"_subject(\d+)", f)] if m})
+            what = f"LaFAN1 subjects {', '.join(map(str, subjects))}" if subjects else f"the pack {Path(pack_path).name}"
+            description = f"{what} ({len(files)} files)"
+        fps = round(1.0 / float(z["frame_time"]), 3)
     return fps, description

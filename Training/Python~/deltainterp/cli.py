@@ -51,6 +51,7 @@ def _prepare(sub) -> None:
     p.add_argument("--reference-frame", type=int, help="the frame whose pose is the reference (manifest default)")
     p.add_argument("--input-fps", type=float, help="every file's true frame rate (manifest default)")
     p.add_argument("--map", help="a JSON joint map for every file (manifest default; the format `inbetween retarget --map` reads)")
+    p.add_argument("--up", help="every file's up axis: auto, y or z (manifest default \"up\"; `inbetween retarget --up`)")
     p.add_argument("--time-scales", default="",
                    help="augment with time-scaled copies, e.g. 0.8,1.25 (1.25 = played 25%% slower); trained on, never validated on")
     p.add_argument("--model", help="the .onnx whose skeleton and frame rate are the target (default: the tool's)")
@@ -62,7 +63,7 @@ def _prepare(sub) -> None:
 
 def _is_lafan1_folder(args) -> bool:
     if len(args.data) != 1 or args.holdout or any(getattr(args, k) is not None for k in
-                                                  ("from_frame", "reference_frame", "input_fps", "map")):
+                                                  ("from_frame", "reference_frame", "input_fps", "map", "up")):
         return False
     folder = Path(args.data[0])
     if not folder.is_dir() or (folder / "inbetween-data.json").exists():
@@ -70,6 +71,22 @@ def _is_lafan1_folder(args) -> bool:
     import re
     names = [f.name for f in folder.glob("*.bvh")]
     return bool(names) and all(re.fullmatch(r"[A-Za-z]+\d*_subject\d+\.bvh", n) for n in names)
+
+
+def _export_name(given, checkpoint: str, exported: str) -> str:
+    """The exported model's name: --name, else an exported model's own, else after the run (its folder);
+    never a data set's it was not trained on (the default was once DeltaInterpolator-LaFAN1 for any run)."""
+    import re
+    if given is not None:
+        if not given.strip() or len(given) > 100 or any(ord(c) < 32 or ord(c) == 127 for c in given):
+            raise ValueError(f"--name {given[:40]!r}; expected a model name of 1 to 100 printable characters")
+        return given
+    if exported:
+        return exported
+    run = re.sub(r"[^A-Za-z0-9._-]+", "-", Path(checkpoint).resolve().parent.name).strip("-.")
+    if not run:
+        raise ValueError(f"{checkpoint}: no run folder to name the model after; expected --name NAME")
+    return f"DeltaInterpolator-{run}"
 
 
 def _run_prepare(args) -> int:
@@ -98,8 +115,11 @@ def _run_prepare(args) -> int:
             raise ValueError(f"--time-scales: {v}; expected factors from 0.25 to 4")
     if args.jobs < 1 or args.jobs > 64:
         raise ValueError(f"--jobs {args.jobs}; expected 1 to 64")
+    from .datasets import UP_AXES
+    if args.up is not None and args.up not in UP_AXES:
+        raise ValueError(f"--up {args.up[:40]!r}; expected auto, y or z")
     options = {"from_frame": args.from_frame, "reference_frame": args.reference_frame, "fps": args.input_fps,
-               "map": args.map}
+               "map": args.map, "up": args.up}
     inputs = _named_inputs(args)
     for source in [open_source(d) for d in args.data]:  # nor one of the BVH files, manifests or maps they name
         plans = plan_files(source, options, args.holdout, [])
@@ -245,7 +265,8 @@ def _evaluate_export_fixtures(sub) -> None:
     p.add_argument("--checkpoint", required=True,
                    help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")
     p.add_argument("--out", required=True, help="output path ending in .onnx")
-    p.add_argument("--name", default="DeltaInterpolator-LaFAN1", help="model name in the metadata")
+    p.add_argument("--name", help="model name in the metadata (default: an exported model's own name, else "
+                                    "DeltaInterpolator-RUN after the checkpoint's run folder Training/runs/RUN)")
     p.add_argument("--force", action="store_true", help="replace existing OUT, .keys.onnx and .frame.onnx files")
 
     p = sub.add_parser(
@@ -454,8 +475,9 @@ def _run_evaluate_export_fixtures(args) -> int:
             loaded = load_exported_model(args.checkpoint)
         else:
             loaded = load_checkpoint(args.checkpoint)
-        report = export_model(loaded, args.out, args.name)
-        print(f"{shown(args.name)}: {report.parameters:,} parameters, opset 15, checked against torch "
+        name = _export_name(args.name, args.checkpoint, loaded.name)
+        report = export_model(loaded, args.out, name)
+        print(f"{shown(name)} (trained on: {shown(loaded.data_description or 'not recorded')}): {report.parameters:,} parameters, opset 15, checked against torch "
               f"(max |diff| {report.max_difference:.2g})")
         for kind, path in report.paths.items():
             print(f"  {kind:<5} {shown(path)}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")

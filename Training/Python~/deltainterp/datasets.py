@@ -19,8 +19,8 @@ to the manifest). Its fields (all optional):
 `from_frame` drops the frames before it (a T-pose, conversion artefacts: they are never keys, never
 scored, never trained on); `reference_frame` is the frame (0-based, may be a dropped one) whose pose is the
 skeleton's reference (null: its default pose, see `inbetween retarget --help`); `fps` overrides a wrong
-header; `map` is a JSON joint map (path relative to the manifest) for names the built-in maps miss; `skip`
-leaves a file out. `files` keys are globs on the path relative to the folder; later matches override
+header; `map` is a JSON joint map (path relative to the manifest) for names the built-in maps miss; `up`
+is the file's up axis ("auto", "y" or "z"; null: auto, as `inbetween retarget --up`); `skip` leaves a file out. `files` keys are globs on the path relative to the folder; later matches override
 earlier ones, options on the command line override the defaults.
 """
 from __future__ import annotations
@@ -50,7 +50,8 @@ from .safe_input import check_regular
 from .terminal_text import NAME_LENGTH, safe
 
 MANIFEST_NAME = "inbetween-data.json"
-FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip"}
+FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip", "up"}
+UP_AXES = ("auto", "y", "z")  # `inbetween --up` and score's manifest reader take the same values
 REPO_ROOT = Path(__file__).resolve().parents[3]  # Training/Python~/deltainterp/datasets.py
 MAX_MANIFEST_BYTES = 1 << 20
 
@@ -66,6 +67,7 @@ class FilePlan:
     map: Optional[Path] = None
     time_scale: float = 1.0     # > 1: played slower (more frames), < 1: faster; 1 = as captured
     group: str = ""
+    up: Optional[str] = None    # the file's up axis for `retarget --up` (auto, y, z); None: the tool's default (auto)
 
 
 @dataclass
@@ -128,6 +130,9 @@ def _check_settings(path: Path, settings: Dict) -> None:
         raise _fail(path, f"\"map\": {settings['map']!r}", "expected a path to a JSON joint map (or null)")
     if "skip" in settings and not isinstance(settings["skip"], bool):
         raise _fail(path, f"\"skip\": {settings['skip']!r}", "expected true or false")
+    v = settings.get("up")
+    if v is not None and v not in UP_AXES:
+        raise _fail(path, f"\"up\": {v!r}"[:80], "expected \"auto\", \"y\" or \"z\" (or null)")
 
 
 def open_source(spec: str) -> DataSource:
@@ -183,7 +188,8 @@ def plan_files(source: DataSource, options: Dict, holdout: Sequence[str], time_s
                 map_path = base / map_path
         for scale in [1.0] + [s for s in time_scales if s != 1.0]:
             plans.append(FilePlan(path, name, str(source.folder), int(settings.get("from_frame") or 0),
-                                  settings.get("reference_frame"), settings.get("fps"), map_path, scale))
+                                  settings.get("reference_frame"), settings.get("fps"), map_path, scale,
+                                  up=settings.get("up")))
     if source.groups and plans:
         names = sorted({p.name for p in plans})
         groups = dict(zip(names, subject_groups(source.groups, names, str(source.manifest or source.folder))))
@@ -268,6 +274,8 @@ def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]
         args += ["--reference-frame", str(plan.reference_frame)]
     if plan.map is not None:
         args += ["--map", _as_argument(plan.map)]
+    if plan.up is not None:
+        args += ["--up", plan.up]
     if model:
         args += ["--model", _as_argument(model)]
     # A time scale s plays the motion s times as long: the file is read as if captured at fps / s.

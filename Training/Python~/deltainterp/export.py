@@ -201,7 +201,7 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
                      "future_frames": list(TRAINING_FUTURE),
                      "missing_frames": [int(loaded.train_config.get("min_gap", TRAINING_MISSING[0])),
                                         int(loaded.train_config.get("max_gap", TRAINING_MISSING[1]))], "fps": loaded.fps,
-                     "data": loaded.data_description or "LaFAN1 subjects 1-4"},
+                     "data": loaded.data_description or "not recorded"},
         "max_frame_index": C.MAX_FRAME_INDEX,
         "architecture": {"width": cfg.width, "blocks": cfg.blocks, "heads": cfg.heads,
                          "embedding_dim": cfg.embedding_dim, "embedding_size": cfg.embedding_size,
@@ -337,7 +337,7 @@ class ExportReport:
     parameters: int
 
 
-def export_model(loaded: LoadedModel, out: str | Path, name: str = "DeltaInterpolator-LaFAN1",
+def export_model(loaded: LoadedModel, out: str | Path, name: str = "DeltaInterpolator",
                  check: bool = True) -> ExportReport:
     """Export the three graphs next to each other, verify them, and write them (only if all pass)."""
     import onnx

@@ -182,4 +182,5 @@ def load_exported_model(path: str | Path):
     model = DeltaInterpolator(config)
     model.load_state_dict(load_onnx_weights(path, config))
     model.eval()
-    return LoadedModel(model, skeleton, unit_scale, 0, {"min_past": min_past}, {}, axes[0], axes[1], fps, data)
+    name = str(meta.get("name", ""))[:100]
+    return LoadedModel(model, skeleton, unit_scale, 0, {"min_past": min_past}, {}, axes[0], axes[1], fps, data, name)

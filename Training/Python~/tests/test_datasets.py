@@ -42,6 +42,27 @@ def test_options_override_manifest_defaults_but_not_per_file_entries(tmp_path):
     assert plans["01_01.bvh"].from_frame == 5 and plans["02_01.bvh"].from_frame == 3
 
 
+def test_up_reaches_retarget_per_file_and_from_the_command_line(tmp_path):
+    """Issue 30: the manifest's "up" (auto, y, z; as score's reader) becomes `retarget --up`; an option overrides the default."""
+    from deltainterp.datasets import _retarget_args
+    data = _folder(tmp_path, {"defaults": {"up": "auto"}, "files": {"60_*": {"up": "z"}}})
+    plans = {p.name: p for p in plan_files(open_source(str(data)), {}, [], [])}
+    assert plans["60_01.bvh"].up == "z" and plans["01_01.bvh"].up == "auto"
+    args = _retarget_args(plans["60_01.bvh"], tmp_path / "o.bvh", None)
+    assert args[args.index("--up") + 1] == "z"
+    forced = {p.name: p for p in plan_files(open_source(str(data)), {"up": "y"}, [], [])}
+    assert forced["01_01.bvh"].up == "y" and forced["60_01.bvh"].up == "z"
+    bare = _folder(tmp_path / "bare")
+    assert "--up" not in _retarget_args(plan_files(open_source(str(bare)), {}, [], [])[0], tmp_path / "o.bvh", None)
+
+
+def test_prepare_refuses_a_hostile_up_in_one_line(tmp_path, capsys):
+    data = _folder(tmp_path)
+    code = main(["prepare", "--data", str(data), "--up", "x\x1b[2J", "--out", str(tmp_path / "o.npz")])
+    err = capsys.readouterr().err.strip()
+    assert code == 2 and "--up" in err and "expected auto, y or z" in err and "\n" not in err and "\x1b" not in err
+
+
 def test_a_manifest_file_names_its_folder_relative_to_itself(tmp_path):
     data = _folder(tmp_path)
     manifest = tmp_path / "sets" / "mine.json"
@@ -60,6 +81,9 @@ def test_a_manifest_file_names_its_folder_relative_to_itself(tmp_path):
     ({"files": {"x": {"speed": 2}}}, "unknown settings"),
     ({"groups": "("}, "regular expression"),
     ({"defaults": {"skip": "yes"}}, "skip"),
+    ({"defaults": {"up": "x"}}, "\"up\""),
+    ({"files": {"a*": {"up": "Z; rm -rf /"}}}, "\"up\""),
+    ({"defaults": {"up": 1}}, "\"up\""),
 ])
 def test_bad_manifests_are_refused_naming_the_file(tmp_path, manifest, phrase):
     data = _folder(tmp_path, manifest)
