@@ -4,6 +4,7 @@ using System.Globalization;
 using System.Text;
 using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Baking
@@ -32,7 +33,7 @@ namespace DeltaInterpolator.Core.Baking
     /// </remarks>
     public sealed class ClipBaker
     {
-        private readonly Dictionary<long, Transition> _transitions = new Dictionary<long, Transition>();
+        private readonly ShapeCache<Transition> _transitions = new ShapeCache<Transition>();
         private Skeleton? _transitionSkeleton;
         private double[] _root = Array.Empty<double>();
         private FootLocker? _locker;
@@ -118,7 +119,7 @@ namespace DeltaInterpolator.Core.Baking
                 }
 
                 int available = Math.Min(Settings.FilledFramesAsContext ? start - first + 1 : KeyRun(sorted, i), Settings.PastFrames);
-                int pastFrames = PastContext.KeyCount(available, Settings.PastFrames, Settings.ShortContext);
+                int pastFrames = PastContext.PastFrames(available, Settings.PastFrames, Settings.ShortContext);
                 if (pastFrames > fit)
                 {
                     pastFrames = fit;
@@ -275,14 +276,7 @@ namespace DeltaInterpolator.Core.Baking
                 _transitionSkeleton = skeleton;
             }
 
-            long key = ((long)past << 32) | (uint)missing;
-            if (!_transitions.TryGetValue(key, out Transition? t))
-            {
-                t = new Transition(skeleton, past, missing);
-                _transitions.Add(key, t);
-            }
-
-            return t;
+            return _transitions.Find(past, missing) ?? _transitions.Add(past, missing, new Transition(skeleton, past, missing));
         }
 
         /// <summary>How many keys end at keys[i] without a frame between them (≥ 1).</summary>

@@ -39,7 +39,9 @@ namespace DeltaInterpolator.Core.Playback
         private readonly IPoseConverter _map;
         private readonly TransitionScheduler _scheduler;
         private readonly PlaybackSettings _settings;
-        private readonly List<TransitionRequest> _requests = new List<TransitionRequest>();
+        // A finished request is free for the next of its shape (the playing one is skipped); non-capturing, so a search allocates nothing.
+        private static readonly Func<TransitionRequest, bool> IsFinished = r => r.Finished;
+        private readonly ShapeCache<TransitionRequest> _requests = new ShapeCache<TransitionRequest>();
         private readonly int _joints;
         private readonly double[] _pastRoots;
         private readonly double[] _pastRotations;
@@ -479,14 +481,8 @@ namespace DeltaInterpolator.Core.Playback
 
         private TransitionRequest RequestFor(int past, int missing)
         {
-            foreach (TransitionRequest j in _requests)
-            {
-                if (j != _request && j.Finished && j.Transition.PastFrames == past && j.Transition.MissingFrames == missing) return j;
-            }
-
-            var request = new TransitionRequest(new Transition(_scheduler.Contract.Skeleton, past, missing), _scheduler.Contract);
-            _requests.Add(request);
-            return request;
+            return _requests.Find(past, missing, _request, IsFinished)
+                ?? _requests.Add(past, missing, new TransitionRequest(new Transition(_scheduler.Contract.Skeleton, past, missing), _scheduler.Contract));
         }
 
         private static double SmoothStep(double x)

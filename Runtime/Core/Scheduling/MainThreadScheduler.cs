@@ -18,7 +18,7 @@ namespace DeltaInterpolator.Core.Scheduling
         private int _tokensPerFrame = 512;
         private int _framesPerRequest = 1;
 
-        /// <summary>Creates the decoder; it owns <paramref name="inbetweener"/>.</summary>
+        /// <summary>Creates the scheduler; it owns <paramref name="inbetweener"/>.</summary>
         /// <param name="inbetweener">The model.</param>
         /// <param name="maxBatch">Most transitions per run (1: one run per request and frame, unbatched).</param>
         /// <param name="framesPerRun">Missing frames each transition decodes per run (default 4: a run whose results arrive a few

@@ -60,7 +60,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             Name = c.ExpectMember("name").ExpectString("name");
             PastFrames = (int)c.ExpectMember("past_frames").ExpectNumber("past_frames");
-            Gap = (int)c.ExpectMember("gap").ExpectNumber("gap");
+            MissingFrames = (int)c.ExpectMember("gap").ExpectNumber("gap");   // n; the fixture's field keeps the exporter's name
             PastRootPositions = Flatten(c.ExpectMember("past_root_positions"));
             PastLocalQuaternions = Flatten(c.ExpectMember("past_local_quaternions"));
             TargetRootPosition = Flatten(c.ExpectMember("target_root_position"));
@@ -85,7 +85,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         public string Name { get; }
         public int PastFrames { get; }
-        public int Gap { get; }
+        public int MissingFrames { get; }
         public double[] PastRootPositions { get; }
         public double[] PastLocalQuaternions { get; }
         public double[] TargetRootPosition { get; }
@@ -108,7 +108,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>A transition on <paramref name="skeleton"/> holding this case's keys.</summary>
         public Transition ToTransition(Skeleton skeleton)
         {
-            var t = new Transition(skeleton, PastFrames, Gap);
+            var t = new Transition(skeleton, PastFrames, MissingFrames);
             Array.Copy(PastRootPositions, t.KeyRootPositions, PastRootPositions.Length);
             Array.Copy(TargetRootPosition, 0, t.KeyRootPositions, PastFrames * 3, 3);
             Array.Copy(PastLocalQuaternions, t.KeyLocalRotations, PastLocalQuaternions.Length);
