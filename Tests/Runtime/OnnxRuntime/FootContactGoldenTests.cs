@@ -40,7 +40,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             Assert.That(_model.Contract.HasFootContacts, Is.True);
             Assert.That(Fixtures.GoldenContacts.Count, Is.GreaterThanOrEqualTo(4));
-            foreach (GoldenCase c in Fixtures.GoldenContacts) Assert.That(c.FootContacts, Has.Length.EqualTo(4 * c.Gap), c.Name);
+            foreach (GoldenCase c in Fixtures.GoldenContacts) Assert.That(c.FootContacts, Has.Length.EqualTo(4 * c.MissingFrames), c.Name);
         }
 
         [TestCaseSource(nameof(Cases))]
@@ -61,9 +61,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void LazyFrameContactsMatchPyTorch(GoldenCase c)
         {
             Transition t = c.ToTransition(_model.Contract.Skeleton);
-            LazyInbetweener decoder = _model.CreateLazy(c.PastFrames, c.Gap);
+            LazyInbetweener decoder = _model.CreateLazy(c.PastFrames, c.MissingFrames);
             decoder.Begin(t);
-            for (int k = c.Gap - 1; k >= 0; k--) decoder.DecodeFrame(k);
+            for (int k = c.MissingFrames - 1; k >= 0; k--) decoder.DecodeFrame(k);
             double contacts = GoldenParityTests.MaxAbs(t.FootContacts, c.FootContacts!);
             TestContext.Out.WriteLine($"{c.Name}: lazy foot_contacts {contacts:E2}");
             Assert.That(contacts, Is.LessThan(ContactTolerance), "foot_contacts");
