@@ -289,8 +289,10 @@ namespace DeltaInterpolator.Editor.Baking
                     var methods = new List<BakeMethod> { model };
                     if (_alsoSlerp) methods.Add(BakeMethod.Slerp(_lockFeet));
                     BakeRun run = CharacterBake.Run(contract, track, jointMap, methods, progress);
-                    var warnings = run.Methods[0].Plan.Warnings;
-                    if (warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the keys", string.Join("\n", warnings), "Save anyway", "Cancel"))
+                    // The plan's warnings (keys) and the run's (e.g. foot locking skipped on a rig whose legs cannot be bent).
+                    var warnings = new List<string>(run.Methods[0].Plan.Warnings);
+                    warnings.AddRange(run.Warnings);
+                    if (warnings.Count > 0 && !EditorUtility.DisplayDialog("Check the bake", string.Join("\n", warnings), "Save anyway", "Cancel"))
                     {
                         return;
                     }

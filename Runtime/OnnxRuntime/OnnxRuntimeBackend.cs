@@ -74,6 +74,9 @@ namespace DeltaInterpolator.OnnxRuntime
             // One read of the file: ONNX Runtime loads the graph from these bytes and Core reads the
             // contract's metadata from the same bytes, as every backend does (OnnxMetadataReader).
             byte[] bytes = File.ReadAllBytes(path);
+            // Before ONNX Runtime sees the graph: an operator outside the contract (a Loop of 10^12 trips) is
+            // refused here, never loaded or run by the probe.
+            ModelOperators.Check(bytes, path, allowQuantized: true);
             InferenceSession session;
             try
             {

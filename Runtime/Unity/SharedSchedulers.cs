@@ -25,19 +25,19 @@ namespace DeltaInterpolator.Unity
             }
 
             entry.Users++;
-            return entry.Decoder;
+            return entry.Scheduler;
         }
 
-        public static void Release(TransitionScheduler decoder)
+        public static void Release(TransitionScheduler scheduler)
         {
             foreach (KeyValuePair<(InbetweeningModel, string), Entry> e in s_entries)
             {
-                if (e.Value.Decoder != decoder) continue;
+                if (e.Value.Scheduler != scheduler) continue;
                 if (--e.Value.Users == 0)
                 {
                     s_entries.Remove(e.Key);
-                    SchedulerPump.Remove(decoder);
-                    decoder.Dispose();
+                    SchedulerPump.Remove(scheduler);
+                    scheduler.Dispose();
                 }
 
                 return;
@@ -46,12 +46,12 @@ namespace DeltaInterpolator.Unity
             for (int i = 0; i < s_discarded.Count; i++)
             {
                 Entry entry = s_discarded[i];
-                if (entry.Decoder != decoder) continue;
+                if (entry.Scheduler != scheduler) continue;
                 if (--entry.Users == 0)
                 {
                     s_discarded.RemoveAt(i);
-                    SchedulerPump.Remove(decoder);
-                    decoder.Dispose();
+                    SchedulerPump.Remove(scheduler);
+                    scheduler.Dispose();
                 }
 
                 return;
@@ -59,14 +59,14 @@ namespace DeltaInterpolator.Unity
         }
 
         /// <summary>
-        /// The decoder's engine failed: the next <see cref="Acquire"/> of its model loads a fresh one, while the
+        /// The scheduler's engine failed: the next <see cref="Acquire"/> of its model loads a fresh one, while the
         /// characters still holding this one release it as usual (the last disposes it).
         /// </summary>
-        public static void Discard(TransitionScheduler decoder)
+        public static void Discard(TransitionScheduler scheduler)
         {
             foreach (KeyValuePair<(InbetweeningModel, string), Entry> e in s_entries)
             {
-                if (e.Value.Decoder != decoder) continue;
+                if (e.Value.Scheduler != scheduler) continue;
                 s_entries.Remove(e.Key);
                 s_discarded.Add(e.Value);
                 return;
@@ -84,12 +84,12 @@ namespace DeltaInterpolator.Unity
 
         private sealed class Entry
         {
-            public Entry(TransitionScheduler decoder)
+            public Entry(TransitionScheduler scheduler)
             {
-                Decoder = decoder;
+                Scheduler = scheduler;
             }
 
-            public TransitionScheduler Decoder { get; }
+            public TransitionScheduler Scheduler { get; }
 
             public int Users { get; set; }
         }

@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Benchmarks
     /// The per-frame cost of foot locking for 1, 16 and 64 characters of LaFAN1's 22 joints, every character with
     /// both feet planted on every frame (the costliest case: FK of the frame and two-bone IK of both legs, toe and
     /// heel held): <see cref="Frame"/> is a bake's (<see cref="FootLocker.LockFrame"/>; planning, once per bake, not
-    /// part of it), <see cref="PlaybackFrame"/> the component's (<see cref="LiveFootLocker.LockPose"/>: contact
+    /// part of it), <see cref="PlaybackFrame"/> the component's (<see cref="LiveFootLocker.LockPose(double, ReadOnlySpan{double}, Span{double})"/>: contact
     /// labels, FK and IK of the pose shown; a new transition every 58 frames included). Divide by Characters for the
     /// per-character cost; both must allocate 0 B.
     /// <code>dotnet run -c Release --project Tools~/Benchmarks -- --filter '*FootLockBenchmarks*'</code>
@@ -26,6 +26,7 @@ namespace DeltaInterpolator.Benchmarks
         private MotionClip[] _clips = null!;
         private double[][] _rotations = null!;
         private int _frame;
+        private readonly float[] _planted = { 0.9f, 0.9f, 0.9f, 0.9f };
 
         /// <summary>Characters locked per rendered frame.</summary>
         [Params(1, 16, 64)]
@@ -127,6 +128,25 @@ namespace DeltaInterpolator.Benchmarks
                 double[] pose = _rotations[c];
                 Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
                 _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose);
+            }
+        }
+
+        /// <summary>
+        /// <see cref="PlaybackFrame"/> with the model's predicted contacts deciding touch-down and lift-off (issue 29: every
+        /// foot joint predicted planted, so both legs are solved on every frame, as in <see cref="PlaybackFrame"/>).
+        /// </summary>
+        [Benchmark]
+        public void PlaybackFramePredicted()
+        {
+            _frame = _frame % (Frames - 2) + 1;
+            if (_frame == 1) BeginTransitions();
+            for (int c = 0; c < _live.Length; c++)
+            {
+                MotionClip clip = _clips[c];
+                int j = clip.Skeleton.JointCount;
+                double[] pose = _rotations[c];
+                Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
+                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose, _planted, 0.5);
             }
         }
 

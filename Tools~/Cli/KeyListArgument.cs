@@ -13,6 +13,12 @@ namespace DeltaInterpolator.Cli
         /// <summary>The largest key list file read (about a million keys).</summary>
         public const long MaxFileBytes = 8 << 20;
 
+        /// <summary>The file that <paramref name="value"/> names after '@' (an input of the command), or null for a literal key list.</summary>
+        public static string? FilePath(string value)
+        {
+            return value.StartsWith("@", System.StringComparison.Ordinal) ? value.Substring(1) : null;
+        }
+
         /// <summary>
         /// The comma-separated key list that <paramref name="value"/> means: itself, or the contents of the
         /// file it names after '@' with every run of spaces, commas and line breaks made one comma.
@@ -20,8 +26,8 @@ namespace DeltaInterpolator.Cli
         /// <exception cref="InputPathException">The file is missing, not a regular file, or too large.</exception>
         public static string Text(string value)
         {
-            if (!value.StartsWith("@", System.StringComparison.Ordinal)) return value;
-            string path = value.Substring(1);
+            string? path = FilePath(value);
+            if (path == null) return value;
             string text = InputFile.ReadAllText(path, "a key list file (frame indices separated by commas, spaces or lines)", MaxFileBytes);
             return Regex.Replace(text.Trim(), @"[\s,]+", ",");
         }

@@ -5,6 +5,7 @@ using System.IO;
 using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Kinematics;
+using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Preview
@@ -21,8 +22,9 @@ namespace DeltaInterpolator.Preview
         /// <param name="range">Frames START..END (inclusive, frame indices of the files) to show, or null for all.</param>
         /// <param name="keys">Key frame indices of the files, increasing.</param>
         /// <param name="firstIsTruth">True when the first track is the ground truth the others are measured against.</param>
-        /// <exception cref="DataFormatException">A file cannot be shown with the others, or a key lies outside the frames shown.</exception>
-        public static PreviewScene Build(IReadOnlyList<(string Name, string Path)> tracks, (int Start, int End)? range, IReadOnlyList<int> keys, bool firstIsTruth)
+        /// <param name="map">A joint map (model joint → the files' joints) naming the hands and feet whose trails are drawn; null: found by name.</param>
+        /// <exception cref="DataFormatException">A file cannot be shown with the others, a key lies outside the frames shown, or the map names a hand or foot the files lack.</exception>
+        public static PreviewScene Build(IReadOnlyList<(string Name, string Path)> tracks, (int Start, int End)? range, IReadOnlyList<int> keys, bool firstIsTruth, JointMap? map = null)
         {
             var clips = new List<(string Name, MotionClip Clip)>();
             BvhAnimation? first = null;
@@ -60,7 +62,54 @@ namespace DeltaInterpolator.Preview
             }
 
             string title = Path.GetFileName(tracks[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
-            return PreviewScene.FromClips(title, clips, sceneKeys, firstIsTruth ? 0 : -1);
+            PreviewScene scene = PreviewScene.FromClips(title, clips, sceneKeys, firstIsTruth ? 0 : -1);
+            scene.FirstFrame = offset;
+            if (map != null) scene.Extremities = Extremities(map, first!.Skeleton, tracks[0].Path);
+            return scene;
+        }
+
+        /// <summary>The model's hands and feet whose trails a preview draws.</summary>
+        public static IReadOnlyList<string> ExtremityJoints { get; } = new[] { "LeftHand", "RightHand", "LeftFoot", "RightFoot" };
+
+        /// <summary>
+        /// The joints of <paramref name="skeleton"/> that play the model's hands and feet: the last joint of
+        /// each one's chain in <paramref name="map"/>, or of a built-in map's chain when the map does not
+        /// name it (as retargeting merges a partial map with the built-in names).
+        /// </summary>
+        /// <exception cref="DataFormatException">The map names a hand or foot joint the file lacks (a typo, another rig's map).</exception>
+        public static int[] Extremities(JointMap map, Skeleton skeleton, string path)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            var joints = new List<int>();
+            foreach (string name in ExtremityJoints)
+            {
+                IReadOnlyList<string>? chain = map.SourceChain(name);
+                if (chain != null)
+                {
+                    int j = JointMap.FindJoint(skeleton, chain[chain.Count - 1]);
+                    if (j < 0)
+                    {
+                        throw new DataFormatException(map.Name, $"maps {name} to '{chain[chain.Count - 1]}', which {Path.GetFileName(path)} lacks", "expected joint names of the files shown (--map is the map of their rig)");
+                    }
+
+                    joints.Add(j);
+                    continue;
+                }
+
+                foreach (JointMap builtIn in JointMap.BuiltIn)
+                {
+                    IReadOnlyList<string>? fallback = builtIn.SourceChain(name);
+                    int j = fallback == null ? -1 : JointMap.FindJoint(skeleton, fallback[fallback.Count - 1]);
+                    if (j >= 0)
+                    {
+                        joints.Add(j);
+                        break;
+                    }
+                }
+            }
+
+            return joints.ToArray();
         }
 
         /// <summary>Refuses a file that cannot play beside the first: another skeleton or another frame rate.</summary>

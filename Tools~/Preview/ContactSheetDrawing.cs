@@ -61,7 +61,7 @@ namespace DeltaInterpolator.Preview
                 {
                     double s = Along(p[i], p[i + 2]);
                     double l = Across(p[i], p[i + 2]);
-                    (double rx, _, double rz) = reference.At(i / 3 / scene.JointCount, 0);
+                    (double rx, _, double rz) = reference.At(i / 3 / scene.JointCount, scene.BodyRoot);
                     reach = Math.Max(reach, Math.Abs(s - Along(rx, rz)));
                     sMin = Math.Min(sMin, s);
                     sMax = Math.Max(sMax, s);
@@ -115,7 +115,7 @@ namespace DeltaInterpolator.Preview
 
         private string FooterText()
         {
-            string frames = string.Join(", ", _poses.Select(f => f.ToString(Invariant)));
+            string frames = string.Join(", ", _poses.Select(f => (f + _scene.FirstFrame).ToString(Invariant)));
             string trails = string.Join(", ", _trailJoints.Select(j => _scene.JointNames[j]));
             return $"poses at frames {frames}; gold: key frames; trails: {trails}; {_scene.FrameCount} frames at {1 / _scene.FrameTime:0.##} fps";
         }
@@ -144,7 +144,7 @@ namespace DeltaInterpolator.Preview
             }
             else if (_scene.GroundTruthTrack >= 0)
             {
-                note = "mean error " + _scene.MeanErrorBetweenKeys(track).ToString("0.###", Invariant);
+                note = "mean error " + _scene.FormatDistance(_scene.MeanErrorBetweenKeys(track));
             }
 
             if (note != null)
@@ -152,7 +152,7 @@ namespace DeltaInterpolator.Preview
                 svg.Append("<text x=\"").Append(N(Gap + 16)).Append("\" y=\"").Append(N(y + 48)).Append("\" font-size=\"13\" fill=\"#59626b\">").Append(Escape(note)).Append("</text>\n");
                 if (track != _scene.GroundTruthTrack)
                 {
-                    string scope = _scene.KeyFrames.Count > 0 ? "between keys (data units)" : "(data units)";
+                    string scope = _scene.KeyFrames.Count > 0 ? "per joint, between keys" : "per joint";
                     svg.Append("<text x=\"").Append(N(Gap + 16)).Append("\" y=\"").Append(N(y + 66)).Append("\" font-size=\"12\" fill=\"#7a838c\">").Append(scope).Append("</text>\n");
                 }
             }
@@ -177,7 +177,7 @@ namespace DeltaInterpolator.Preview
             {
                 if (side)
                 {
-                    (double rx, _, double rz) = _reference.At(frame, 0);
+                    (double rx, _, double rz) = _reference.At(frame, _scene.BodyRoot);
                     double u = timeX + frame * _pixelsPerFrame + (Along(px, pz) - Along(rx, rz)) * box.Scale;
                     return (u, oy - (py - box.Min1) * box.Scale);
                 }
@@ -228,7 +228,7 @@ namespace DeltaInterpolator.Preview
                     lastX = lx;
                     string fill = _keys.Contains(f) ? KeyStroke : "#7a838c";
                     svg.Append("<text x=\"").Append(N(lx)).Append("\" y=\"").Append(N(labelY)).Append("\" font-size=\"11\" text-anchor=\"middle\" fill=\"").Append(fill).Append("\">")
-                        .Append(f.ToString(Invariant)).Append("</text>\n");
+                        .Append((f + _scene.FirstFrame).ToString(Invariant)).Append("</text>\n");
                 }
             }
         }
@@ -238,7 +238,7 @@ namespace DeltaInterpolator.Preview
             foreach (int j in _trailJoints)
             {
                 svg.Append("<polyline fill=\"none\" stroke=\"").Append(color).Append("\" stroke-opacity=\"").Append(N(opacity)).Append("\" stroke-width=\"1.3\" stroke-linejoin=\"round\"")
-                    .Append(j == 0 ? " stroke-dasharray=\"5 3\"" : "").Append(" points=\"");
+                    .Append(j == _scene.BodyRoot ? " stroke-dasharray=\"5 3\"" : "").Append(" points=\"");
                 for (int f = 0; f < track.FrameCount; f++)
                 {
                     (double x, double y, double z) = track.At(f, j);
@@ -268,6 +268,7 @@ namespace DeltaInterpolator.Preview
             var d = new StringBuilder();
             for (int j = 1; j < _scene.JointCount; j++)
             {
+                if (!_scene.DrawsBone(j)) continue;
                 int p = _scene.Parents[j];
                 (double x0, double y0, double z0) = track.At(frame, p);
                 (double x1, double y1, double z1) = track.At(frame, j);
@@ -284,9 +285,10 @@ namespace DeltaInterpolator.Preview
         private double Across(double x, double z) => x * _layout.Lateral[0] + z * _layout.Lateral[2];
 
         /// <summary>
-        /// Frames drawn as poses: the key frames and the frame midway between each pair of consecutive
-        /// keys (where in-betweening methods differ most); at most about a dozen keys, evenly thinned.
-        /// Without keys, twelve evenly spaced frames.
+        /// Frames drawn as poses: about seven key frames, evenly thinned, and between each two of them the
+        /// middle of a gap between keys — never a key itself, since those poses are where in-betweening
+        /// methods differ (with many keys, the midpoint of two thinned keys is often another key). Without
+        /// keys, twelve evenly spaced frames.
         /// </summary>
         internal static int[] PoseFrames(PreviewScene scene)
         {
@@ -307,7 +309,11 @@ namespace DeltaInterpolator.Preview
             for (int i = 0; i < chosen.Count; i++)
             {
                 frames.Add(chosen[i]);
-                if (i + 1 < chosen.Count && chosen[i + 1] - chosen[i] > 1) frames.Add((chosen[i] + chosen[i + 1]) / 2);
+                if (i + 1 < chosen.Count)
+                {
+                    int between = MiddleOfAGap(keys, chosen[i], chosen[i + 1]);
+                    if (between >= 0) frames.Add(between);
+                }
             }
 
             // Frames before the first key and after the last get poses too, about as far apart as the others.
@@ -318,10 +324,44 @@ namespace DeltaInterpolator.Preview
             return frames.ToArray();
         }
 
-        /// <summary>The root, then the hands and feet found by name (left before right).</summary>
+        /// <summary>
+        /// The frame midway through the gap between consecutive keys (inside <paramref name="from"/>..<paramref name="to"/>)
+        /// whose middle lies nearest the middle of that span; −1 when every key there is next to the next.
+        /// </summary>
+        private static int MiddleOfAGap(IReadOnlyList<int> keys, int from, int to)
+        {
+            double middle = (from + to) / 2.0;
+            int best = -1;
+            double distance = double.PositiveInfinity;
+            for (int g = 0; g + 1 < keys.Count; g++)
+            {
+                int a = keys[g], b = keys[g + 1];
+                if (a < from || b > to || b - a < 2) continue;
+                int m = (a + b) / 2;
+                if (Math.Abs(m - middle) < distance)
+                {
+                    distance = Math.Abs(m - middle);
+                    best = m;
+                }
+            }
+
+            return best;
+        }
+
+        /// <summary>The body root, then the hands and feet: <see cref="PreviewScene.Extremities"/>, else found by name (left before right).</summary>
         internal static int[] TrailJoints(PreviewScene scene)
         {
-            var joints = new List<int> { 0 };
+            var joints = new List<int> { scene.BodyRoot };
+            if (scene.Extremities != null)
+            {
+                foreach (int j in scene.Extremities)
+                {
+                    if (!joints.Contains(j)) joints.Add(j);
+                }
+
+                return joints.ToArray();
+            }
+
             foreach (string part in new[] { "hand", "foot" })
             {
                 foreach (string side in new[] { "left", "right" })

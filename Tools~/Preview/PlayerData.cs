@@ -32,6 +32,12 @@ namespace DeltaInterpolator.Preview
                 foreach (int key in scene.KeyFrames) json.WriteNumberValue(key);
                 json.WriteEndArray();
                 json.WriteNumber("groundTruth", scene.GroundTruthTrack);
+                json.WriteNumber("firstFrame", scene.FirstFrame);
+                json.WriteNumber("bodyRoot", scene.BodyRoot);
+                json.WriteStartArray("drawsBone");
+                for (int j = 0; j < scene.JointCount; j++) json.WriteNumberValue(scene.DrawsBone(j) ? 1 : 0);
+                json.WriteEndArray();
+                if (scene.MetresPerUnit is double metres && metres > 0) json.WriteNumber("cmPerUnit", Math.Round(metres * 100, 9));
                 json.WriteNumber("quantum", layout.Quantum);
                 json.WriteNumber("height", Round(layout.Height, layout.Quantum));
                 json.WriteNumber("floor", Round(layout.Floor, layout.Quantum));

@@ -96,6 +96,34 @@ namespace DeltaInterpolator.Preview
             _keyFrames = keys;
             GroundTruthTrack = groundTruthTrack;
             FrameCount = frames;
+            (BodyRoot, _drawsBone) = FindBodyRoot(_parents);
+        }
+
+        /// <summary>
+        /// The body's root — the first joint with two or more children (the hips of a humanoid) — and which
+        /// joints' bones to their parents are drawn: not those on the chain from the file's root down to the
+        /// body root. Such joints (a "Reference" node at the world origin, a root projected on the floor)
+        /// are not anatomy, and a bone from one to the hips would read as a third leg. A skeleton without
+        /// a branch is one chain: its root is the body root and every bone is drawn.
+        /// </summary>
+        private static (int BodyRoot, bool[] DrawsBone) FindBodyRoot(int[] parents)
+        {
+            var children = new int[parents.Length];
+            for (int j = 1; j < parents.Length; j++) children[parents[j]]++;
+            int body = 0;
+            for (int j = 0; j < parents.Length; j++)
+            {
+                if (children[j] >= 2)
+                {
+                    body = j;
+                    break;
+                }
+            }
+
+            var draws = new bool[parents.Length];
+            for (int j = 1; j < parents.Length; j++) draws[j] = true;
+            for (int j = body; j > 0; j = parents[j]) draws[j] = false;
+            return (body, draws);
         }
 
         /// <summary>
@@ -129,7 +157,24 @@ namespace DeltaInterpolator.Preview
                 tracks.Add(PreviewTrack.FromClip(name, clip));
             }
 
-            return new PreviewScene(title, skeleton.Names, skeleton.Parents, clips[0].Clip.FrameTime, tracks, keyFrames, groundTruthTrack);
+            return new PreviewScene(title, skeleton.Names, skeleton.Parents, clips[0].Clip.FrameTime, tracks, keyFrames, groundTruthTrack)
+            {
+                MetresPerUnit = UnitOf(skeleton),
+            };
+        }
+
+        // The file's unit as the BVH importer tells it (from the leg length), so errors read in centimetres;
+        // null when the skeleton has no leg to measure.
+        private static double? UnitOf(Skeleton skeleton)
+        {
+            try
+            {
+                return DeltaInterpolator.Core.BvhImport.BvhUnitScale.Detect(skeleton, "the scene");
+            }
+            catch (DeltaInterpolator.Core.DataFormatException)
+            {
+                return null;
+            }
         }
 
         /// <summary>
@@ -161,8 +206,75 @@ namespace DeltaInterpolator.Preview
             return null;
         }
 
+        private readonly bool[] _drawsBone;
+        private int _firstFrame;
+        private int[]? _extremities;
+
         /// <summary>Heading of the page and the sheet.</summary>
         public string Title { get; }
+
+        /// <summary>
+        /// The file's frame number of the scene's frame 0 (e.g. START of <c>--frames START-END</c>): frame
+        /// labels on the page and the sheet are the file's, so they match the keys the user typed.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">A negative number.</exception>
+        public int FirstFrame
+        {
+            get => _firstFrame;
+            set => _firstFrame = value >= 0 ? value : throw new ArgumentOutOfRangeException(nameof(FirstFrame), $"first frame {value}; expected a frame number of 0 or more");
+        }
+
+        /// <summary>
+        /// The hands and feet whose trails are drawn (joint indices), e.g. from a joint map; null: found by
+        /// their names (LeftHand, l_foot, …).
+        /// </summary>
+        /// <exception cref="ArgumentException">An index outside the skeleton.</exception>
+        public IReadOnlyList<int>? Extremities
+        {
+            get => _extremities;
+            set
+            {
+                if (value != null)
+                {
+                    foreach (int j in value)
+                    {
+                        if (j < 0 || j >= _jointNames.Length)
+                        {
+                            throw new ArgumentException($"extremity joint {j} is outside the skeleton's {_jointNames.Length} joints", nameof(Extremities));
+                        }
+                    }
+                }
+
+                _extremities = value?.ToArray();
+            }
+        }
+
+        /// <summary>
+        /// Metres per data unit, when known (from the skeleton's leg length for a scene of clips): errors
+        /// are then shown in centimetres; null: in data units.
+        /// </summary>
+        public double? MetresPerUnit { get; set; }
+
+        /// <summary>
+        /// A distance in data units as people read it: "3.2 cm" when <see cref="MetresPerUnit"/> is known,
+        /// else "0.123 data units".
+        /// </summary>
+        public string FormatDistance(double value)
+        {
+            if (MetresPerUnit is double m && m > 0)
+            {
+                double cm = value * m * 100;
+                return cm.ToString(cm >= 10 ? "0" : cm >= 1 ? "0.0" : "0.00", System.Globalization.CultureInfo.InvariantCulture) + " cm";
+            }
+
+            return value.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture) + " data units";
+        }
+
+        /// <summary>The body's root (the hips of a humanoid): what the camera follows and the root trail shows.</summary>
+        public int BodyRoot { get; }
+
+        /// <summary>Whether the bone from <paramref name="joint"/>'s parent to it is drawn (false for the root and for joints above the body root).</summary>
+        public bool DrawsBone(int joint) => _drawsBone[joint];
 
         /// <summary>Joint names in hierarchy order.</summary>
         public IReadOnlyList<string> JointNames => _jointNames;

@@ -25,7 +25,7 @@ namespace DeltaInterpolator.Preview
         /// <summary>Lowest joint height over every track and frame: where the ground grid lies.</summary>
         public double Floor { get; }
 
-        /// <summary>Unit XZ direction (x, 0, z) from the reference track's first root position to its last (+Z when it hardly moves).</summary>
+        /// <summary>Unit XZ direction (x, 0, z) from the reference track's first body-root position to its last (+Z when it hardly moves).</summary>
         public double[] Travel { get; }
 
         /// <summary>Unit XZ direction perpendicular to <see cref="Travel"/>: tracks stand apart along it.</summary>
@@ -72,8 +72,10 @@ namespace DeltaInterpolator.Preview
                 for (int i = 1; i < p.Length; i += 3) floor = Math.Min(floor, p[i]);
             }
 
-            (double x0, _, double z0) = reference.At(0, 0);
-            (double x1, _, double z1) = reference.At(reference.FrameCount - 1, 0);
+            // The body root, not the file's root: a root node left at the world origin never travels.
+            int body = scene.BodyRoot;
+            (double x0, _, double z0) = reference.At(0, body);
+            (double x1, _, double z1) = reference.At(reference.FrameCount - 1, body);
             double dx = x1 - x0, dz = z1 - z0;
             double length = Math.Sqrt(dx * dx + dz * dz);
             double[] travel = length > 0.5 * height ? new[] { dx / length, 0, dz / length } : new[] { 0.0, 0, 1 };
@@ -83,7 +85,7 @@ namespace DeltaInterpolator.Preview
             double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
             for (int f = 0; f < reference.FrameCount; f++)
             {
-                (double x, _, double z) = reference.At(f, 0);
+                (double x, _, double z) = reference.At(f, body);
                 double s = x * lateral[0] + z * lateral[2];
                 lo = Math.Min(lo, s);
                 hi = Math.Max(hi, s);

@@ -3,13 +3,14 @@
 
 Each mutation copies the package's compiled inputs (.cs, .asmdef, csc.rsp, .json, .meta, the docs) into a
 temporary folder, plants one mistake, compiles the affected assembly as unity_compile.py does (Core is
-reused from the normal run: no mutation touches it) and, for the rules Unity enforces only at run time,
+reused from the normal run unless the mutation is planted in Core) and, for the rules Unity enforces only at run time,
 runs the rules tool; the mutation must fail with the error it names. Mistakes planted: a missing asmdef
 reference, an assembly that exists only under a versionDefines define used unguarded, a nullable
 annotation without the csc.rsp that enables it, a misplaced attribute, editor API in runtime code (player),
 Unity members the stubs lack or with wrong types, a package API that does not exist, a managed field in an
 animation job, a main-thread call inside ProcessAnimation, an unserializable [SerializeField], a menu
-path the docs name that the package does not declare, internals given to a player assembly.
+path the docs name that the package does not declare, internals given to a player assembly, Core's
+internals given to an Editor-only assembly.
 
 Usage: mutations.py OUT_DIR RULES_DLL   (OUT_DIR: where unity_compile.py put its assemblies)
 """
@@ -104,6 +105,9 @@ MUTATIONS = [
     ('internals given to a runtime assembly (Runtime/Unity → DeltaInterpolator.Sentis)', 'editor', 'DeltaInterpolator.Unity',
      lambda r: write(r, 'Runtime/Unity/Mutation.cs', '[assembly: System.Runtime.CompilerServices.InternalsVisibleTo("DeltaInterpolator.Sentis")]\n'),
      'rule', r'^friends: DeltaInterpolator\.Unity gives its internals to DeltaInterpolator\.Sentis'),
+    ('Core\'s internals given to an Editor-only assembly (Runtime/Core → DeltaInterpolator.Evaluation)', 'editor', 'DeltaInterpolator.Core',
+     lambda r: write(r, 'Runtime/Core/Mutation.cs', '[assembly: System.Runtime.CompilerServices.InternalsVisibleTo("DeltaInterpolator.Evaluation")]\n'),
+     'rule', r'^friends: DeltaInterpolator\.Core gives its internals to DeltaInterpolator\.Evaluation, which is not a test assembly'),
     ('a menu the docs name but the package lacks', 'editor', 'DeltaInterpolator.Editor',
      lambda r: open(os.path.join(r, 'README.md'), 'a').write('\nOpen *Window → Animation → No Such Window*.\n'),
      'rule', r'^menu: README\.md:\d+: \*Window → Animation → No Such Window\*'),
@@ -117,7 +121,8 @@ def main(argv):
     nunit = uc.find_nunit()
     failed = 0
     for name, cname, target, plant, kind, expect in MUTATIONS:
-        reuse = ['DeltaInterpolator.Core'] + (['DeltaInterpolator.Unity'] if target != 'DeltaInterpolator.Unity' else [])
+        # Core is reused from the normal run unless the mutation plants its mistake in Core itself.
+        reuse = [n for n in ('DeltaInterpolator.Core', 'DeltaInterpolator.Unity') if n != target]
         prebuilt = {n: os.path.join(out, cname, n + '.dll') for n in reuse}
         with tempfile.TemporaryDirectory(prefix='unity-mutation-') as tmp:
             root = os.path.join(tmp, 'package')

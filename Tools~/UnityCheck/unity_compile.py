@@ -467,7 +467,7 @@ def build_config(comp, root, cname, config, outdir, stubs, nunit, verbose=False,
             if len(shown) > 60:
                 print('  ... %d more' % (len(shown) - 60))
     # What the rules tool needs to know of each assembly of the package, compiled here or not
-    # (InternalsVisibleTo may name only tests and Editor-only assemblies).
+    # (InternalsVisibleTo may name only tests and, outside Core, Editor-only assemblies).
     with open(os.path.join(outdir, 'assemblies.json'), 'w') as f:
         json.dump({a.name: {'editorOnly': a.get('includePlatforms', []) == ['Editor'],
                             'test': 'UNITY_INCLUDE_TESTS' in a.get('defineConstraints', [])}

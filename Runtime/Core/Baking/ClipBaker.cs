@@ -4,6 +4,7 @@ using System.Globalization;
 using System.Text;
 using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Baking
@@ -25,16 +26,18 @@ namespace DeltaInterpolator.Core.Baking
     /// largest frame index). When a gap fits only with fewer past keys than wanted, fewer are fed. Gaps
     /// outside the trained ranges are baked and named in <see cref="BakePlan.Warnings"/>.</para>
     /// <para>With <see cref="BakeSettings.FootLocking"/> the filled frames are then foot-locked
-    /// (<see cref="FootLocker"/>): planted feet held still, key frames untouched.</para>
+    /// (<see cref="FootLocker"/>): planted feet held still, key frames untouched; where the model predicted
+    /// contacts (<see cref="Contacts"/>) they say which feet are planted.</para>
     /// <para>Buffers (one <see cref="Transition"/> per request shape, the root track) are reused across
     /// gaps and bakes. Not thread-safe.</para>
     /// </remarks>
     public sealed class ClipBaker
     {
-        private readonly Dictionary<long, Transition> _transitions = new Dictionary<long, Transition>();
+        private readonly ShapeCache<Transition> _transitions = new ShapeCache<Transition>();
         private Skeleton? _transitionSkeleton;
         private double[] _root = Array.Empty<double>();
         private FootLocker? _locker;
+        private readonly FootContacts _contacts = new FootContacts();
         private int[] _relativeKeys = Array.Empty<int>();
 
         /// <summary>Creates a baker over <paramref name="inbetweener"/> (not owned: the caller disposes it).</summary>
@@ -51,6 +54,13 @@ namespace DeltaInterpolator.Core.Baking
 
         /// <summary>Context, limits and trained ranges.</summary>
         public BakeSettings Settings { get; }
+
+        /// <summary>
+        /// The last bake's foot contacts, one row per frame of the baked clip: the model's predictions on the frames it
+        /// filled when it has a contact output (<see cref="Transition.HasFootContacts"/>), none elsewhere (keys, SLERP,
+        /// models without it), where lockers label them. Overwritten by the next bake.
+        /// </summary>
+        public FootContacts Contacts => _contacts;
 
         /// <summary>
         /// Checks the keys against a clip of <paramref name="frameCount"/> frames and the settings, and lays
@@ -109,7 +119,7 @@ namespace DeltaInterpolator.Core.Baking
                 }
 
                 int available = Math.Min(Settings.FilledFramesAsContext ? start - first + 1 : KeyRun(sorted, i), Settings.PastFrames);
-                int pastFrames = PastContext.KeyCount(available, Settings.PastFrames, Settings.ShortContext);
+                int pastFrames = PastContext.PastFrames(available, Settings.PastFrames, Settings.ShortContext);
                 if (pastFrames > fit)
                 {
                     pastFrames = fit;
@@ -216,6 +226,7 @@ namespace DeltaInterpolator.Core.Baking
             }
 
             ReadOnlySpan<double> offsets = skeleton.OffsetSpan;
+            _contacts.Clear(frames);
             int done = 0;
             progress?.Report(0);
             foreach (BakeGap gap in plan.GapArray)
@@ -226,6 +237,7 @@ namespace DeltaInterpolator.Core.Baking
                 PastContext.FillPast(t, root, rotations, start, gap.PastAvailable);
                 PastContext.FillTarget(t, root, rotations, gap.EndKey - first);
                 Inbetweener.Inbetween(t);
+                if (t.HasFootContacts) _contacts.SetPredicted(start + 1, n, t.FootContacts, t.ContactThreshold);
                 Array.Copy(t.RootPositions, 0, root, (start + 1) * 3, n * 3);
                 Array.Copy(t.LocalRotations, 0, rotations, (start + 1) * rotStride, n * rotStride);
                 for (int k = 0; k < n; k++)
@@ -253,7 +265,7 @@ namespace DeltaInterpolator.Core.Baking
             int[] keys = plan.KeyArray;
             if (_relativeKeys.Length != keys.Length) _relativeKeys = new int[keys.Length];
             for (int i = 0; i < keys.Length; i++) _relativeKeys[i] = keys[i] - plan.FirstKey;
-            _locker.Lock(clip, _relativeKeys);
+            _locker.Lock(clip, _relativeKeys, _contacts);
         }
 
         private Transition TransitionFor(Skeleton skeleton, int past, int missing)
@@ -264,14 +276,7 @@ namespace DeltaInterpolator.Core.Baking
                 _transitionSkeleton = skeleton;
             }
 
-            long key = ((long)past << 32) | (uint)missing;
-            if (!_transitions.TryGetValue(key, out Transition? t))
-            {
-                t = new Transition(skeleton, past, missing);
-                _transitions.Add(key, t);
-            }
-
-            return t;
+            return _transitions.Find(past, missing) ?? _transitions.Add(past, missing, new Transition(skeleton, past, missing));
         }
 
         /// <summary>How many keys end at keys[i] without a frame between them (≥ 1).</summary>

@@ -46,6 +46,7 @@ namespace DeltaInterpolator.Core.BvhImport
             Skeleton skeleton = animation.Skeleton;
             MotionClip motion = animation.Motion;
             int jointCount = skeleton.JointCount;
+            RequireBoundedPaths(skeleton, source);
             double scale = metresPerUnit > 0 && !double.IsInfinity(metresPerUnit) ? metresPerUnit : BvhUnitScale.Detect(skeleton, source);
 
             HumanoidMapping? humanoid = HumanoidMapping.Find(skeleton);
@@ -57,6 +58,10 @@ namespace DeltaInterpolator.Core.BvhImport
             // Stand the prefab on the ground: the file's rest root is often at the origin with the feet below it.
             Vector3D restRoot = rootOffset + new Vector3D(0.0, -lowest, 0.0);
             double legLength = scale * (rootOffset.Y - lowest);
+            if (!FitsFloat(legLength))
+            {
+                throw new DataFormatException(source, $"its rest pose spans {legLength.ToString("R", System.Globalization.CultureInfo.InvariantCulture)} m from the root down", FloatRangeExpected);
+            }
 
             string name = ClipName(source);
             var names = new HashSet<string>(skeleton.Names, StringComparer.Ordinal);
@@ -68,6 +73,12 @@ namespace DeltaInterpolator.Core.BvhImport
                 int parent = skeleton.Parents[j];
                 string path = parent < 0 ? skeleton.Names[j] : joints[parent].Path + "/" + skeleton.Names[j];
                 Vector3D offset = j == 0 ? restRoot : Vector3D.Read(skeleton.OffsetSpan, 3 * j);
+                if (!FitsFloat(scale * offset))
+                {
+                    string what = j == 0 ? "the root's rest position (raised to stand on the ground)" : "OFFSET";
+                    throw new DataFormatException(source, $"joint '{Clip(skeleton.Names[j])}' has {what} {scale * offset} m, beyond float range", FloatRangeExpected);
+                }
+
                 bool positions = j == 0;
                 foreach (BvhChannel c in animation.JointChannels[j]) positions |= !c.IsRotation();
                 joints[j] = new ImportedJoint(
@@ -81,7 +92,7 @@ namespace DeltaInterpolator.Core.BvhImport
 
             FigureBone[] figure = Figure(animation, joints, scale, legLength, names);
             double frameRate = FrameRate(motion.FrameTime);
-            (float[] positionsUnity, float[] rotationsUnity) = Frames(motion, scale);
+            (float[] positionsUnity, float[] rotationsUnity) = Frames(motion, scale, source);
             IReadOnlyList<ClipCurve> curves = Curves(joints, motion.FrameCount, frameRate, positionsUnity, rotationsUnity);
             return new BvhImportResult(source, name, rootName, frameRate, motion.FrameCount, scale, legLength, joints, figure, humanoid, positionsUnity, rotationsUnity, curves)
             {
@@ -108,6 +119,50 @@ namespace DeltaInterpolator.Core.BvhImport
             animation = new BvhAnimation(decided.Apply(animation.Motion), animation.JointChannels, sites, animation.SourceName);
             return decided;
         }
+
+        /// <summary>
+        /// The most characters all joints' transform paths may hold together (<see cref="ImportedJoint.Path"/>,
+        /// which curve bindings need whole): 4,194,304, 8 MB of text. A humanoid's paths hold a few thousand; a
+        /// chain of 16,000 joints each inside the last holds hundreds of millions (1.5 GB), so it is refused.
+        /// </summary>
+        public const long MaxPathCharacters = 1L << 22;
+
+        /// <summary>
+        /// Refuses, before any path is built, a hierarchy whose transform paths would not fit
+        /// <see cref="MaxPathCharacters"/>: the sum is counted in one pass over the joints (a parent comes before its
+        /// children in a BVH skeleton), so the check costs linear time and no memory per path.
+        /// </summary>
+        private static void RequireBoundedPaths(Skeleton skeleton, string source)
+        {
+            int count = skeleton.JointCount;
+            var length = new long[count];
+            var depth = new int[count];
+            long total = 0;
+            int deepest = 0;
+            for (int j = 0; j < count; j++)
+            {
+                int parent = skeleton.Parents[j];
+                length[j] = parent < 0 ? skeleton.Names[j].Length : length[parent] + 1 + skeleton.Names[j].Length;
+                depth[j] = parent < 0 ? 1 : depth[parent] + 1;
+                deepest = Math.Max(deepest, depth[j]);
+                total += length[j];
+                if (total > MaxPathCharacters)
+                {
+                    throw new DataFormatException(
+                        source,
+                        $"the transform paths of its {count} joints (nested up to {deepest} deep by joint {j}) exceed {MaxPathCharacters} characters",
+                        $"expected a hierarchy whose joint paths hold at most {MaxPathCharacters} characters together (a humanoid's hold a few thousand); flatten the chain or split the file");
+                }
+            }
+        }
+
+        private const string FloatRangeExpected = "expected positions within float range (|x| up to 3.4e38 m, what Unity's transforms and curves hold); check the file's OFFSET and position channels, and its unit";
+
+        private static bool FitsFloat(double value) => Math.Abs(value) <= float.MaxValue; // false for NaN and ±Infinity too
+
+        private static bool FitsFloat(Vector3D v) => FitsFloat(v.X) && FitsFloat(v.Y) && FitsFloat(v.Z);
+
+        private static string Clip(string name) => name.Length > 64 ? name.Substring(0, 64) + "…" : name;
 
         /// <summary>Frames per second from a frame time, whole when within 0.01 of a whole number.</summary>
         internal static double FrameRate(double frameTime)
@@ -145,11 +200,20 @@ namespace DeltaInterpolator.Core.BvhImport
         {
             Skeleton skeleton = animation.Skeleton;
             var pieces = new List<FigureBone>();
+            // Each joint's children in one pass (file order): scanning every later joint for each joint was
+            // quadratic (100,000 siblings took 7 s).
+            var children = new List<int>[skeleton.JointCount];
+            for (int c = 1; c < skeleton.JointCount; c++)
+            {
+                int parent = skeleton.Parents[c];
+                if (parent >= 0) (children[parent] ??= new List<int>()).Add(c);
+            }
+
             for (int j = 0; j < skeleton.JointCount; j++)
             {
-                for (int c = j + 1; c < skeleton.JointCount; c++)
+                if (children[j] != null)
                 {
-                    if (skeleton.Parents[c] == j) AddPiece(pieces, j, skeleton.Names[c] + " bone", joints[c].RestPosition, legLength, names);
+                    foreach (int c in children[j]) AddPiece(pieces, j, skeleton.Names[c] + " bone", joints[c].RestPosition, legLength, names);
                 }
 
                 IReadOnlyList<Vector3D> sites = animation.EndSites[j];
@@ -174,7 +238,7 @@ namespace DeltaInterpolator.Core.BvhImport
         }
 
         /// <summary>Every frame's local positions (metres) and rotations ((x, y, z, w), one hemisphere per joint over time) in Unity space.</summary>
-        private static (float[] Positions, float[] Rotations) Frames(MotionClip motion, double scale)
+        private static (float[] Positions, float[] Rotations) Frames(MotionClip motion, double scale, string source)
         {
             int jointCount = motion.Skeleton.JointCount;
             var positions = new float[motion.FrameCount * jointCount * 3];
@@ -185,6 +249,12 @@ namespace DeltaInterpolator.Core.BvhImport
                 for (int j = 0; j < jointCount; j++)
                 {
                     Vector3D p = Handedness.PositionToUnity(scale * Vector3D.Read(motion.LocalPositions, motion.PositionIndex(f, j)));
+                    if (!FitsFloat(p))
+                    {
+                        // A float key of ±Infinity would put the character nowhere, silently.
+                        throw new DataFormatException(source, $"frame {f}, joint '{Clip(motion.Skeleton.Names[j])}': position {p} m beyond float range", FloatRangeExpected);
+                    }
+
                     int pi = motion.PositionIndex(f, j);
                     positions[pi] = (float)p.X;
                     positions[pi + 1] = (float)p.Y;

@@ -117,9 +117,31 @@ namespace DeltaInterpolator.Core.Characters
         /// <inheritdoc />
         public void ToCharacter(ReadOnlySpan<double> jointRoot, ReadOnlySpan<double> jointRotations, Span<double> boneRoot, Span<double> boneRotations)
         {
+            ToSource(jointRoot, jointRotations);
+            SourceToCharacter(boneRoot, boneRotations);
+        }
+
+        /// <summary>
+        /// The first half of <see cref="ToCharacter"/>: a model pose onto the character's own skeleton (<see cref="SkeletonMap.Source"/>,
+        /// model handedness, the character's units), into <see cref="SourceRoot"/> and <see cref="SourceRotations"/>, where the
+        /// component's foot locker holds the character's own feet before <see cref="SourceToCharacter"/> puts the pose on its bones.
+        /// </summary>
+        internal void ToSource(ReadOnlySpan<double> jointRoot, ReadOnlySpan<double> jointRotations)
+        {
             _positions.AsSpan().CopyTo(_backPositions);
             _readRotations.AsSpan().CopyTo(_backRotations);
             Map.ToSourceFrame(Vector3D.Read(jointRoot, 0), jointRotations, _backPositions, _backRotations);
+        }
+
+        /// <summary>After <see cref="ToSource"/>: the root position on the character's skeleton.</summary>
+        internal Span<double> SourceRoot => _backPositions.AsSpan(0, 3);
+
+        /// <summary>After <see cref="ToSource"/>: the bones' local rotations on the character's skeleton (changed in place by a locker).</summary>
+        internal Span<double> SourceRotations => _backRotations;
+
+        /// <summary>The second half of <see cref="ToCharacter"/>: <see cref="SourceRoot"/> and <see cref="SourceRotations"/> onto the bones (Unity's space, under the armature).</summary>
+        internal void SourceToCharacter(Span<double> boneRoot, Span<double> boneRotations)
+        {
             Armature.PointFromParent(Handedness.PositionToUnity(Vector3D.Read(_backPositions, 0))).Write(boneRoot, 0);
             Armature.RotationFromParent(Handedness.RotationToUnity(QuaternionD.Read(_backRotations, 0))).Write(boneRotations, 0);
             for (int b = 1; b < BoneCount; b++)

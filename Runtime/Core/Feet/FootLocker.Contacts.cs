@@ -105,6 +105,23 @@ namespace DeltaInterpolator.Core.Feet
         }
 
         /// <summary>
+        /// Channel c's contacts where the network predicted them (<see cref="FootContacts.IsPredicted"/>), the labels
+        /// elsewhere (keys, frames it did not fill): one contact per run of planted frames, so a predicted stance that
+        /// reaches a planted key is held through the key.
+        /// </summary>
+        private void Predicted(int c, FootContacts contacts, ref int next)
+        {
+            int row = c * _capacity;
+            for (int f = 0; f < _frames; f++)
+            {
+                bool planted = contacts.IsPredicted(f) ? contacts.IsPlanted(f, c) : _segment[row + f] != 0;
+                _segment[row + f] = !planted ? 0
+                    : f > 0 && _segment[row + f - 1] != 0 ? _segment[row + f - 1]
+                    : next++;
+            }
+        }
+
+        /// <summary>
         /// The contact state machine with hysteresis: a joint <paramref name="rise"/> leg lengths above its planted
         /// height moving at <paramref name="speed"/> leg lengths per second becomes planted below the entry
         /// thresholds and stays planted until it passes an exit threshold.

@@ -118,7 +118,7 @@ namespace DeltaInterpolator.Core.Feet
         public int FrameCount => _frames;
 
         /// <summary>
-        /// After <see cref="Lock"/> or <see cref="Plan"/>: whether foot joint <paramref name="channel"/> (0 left ankle,
+        /// After <see cref="Lock(MotionClip, IReadOnlyList{int})"/> or <see cref="Plan(MotionClip, IReadOnlyList{int})"/>: whether foot joint <paramref name="channel"/> (0 left ankle,
         /// 1 left toe, 2 right ankle, 3 right toe) is planted on <paramref name="frame"/>: held on its spot (not on a
         /// frame of a contact where the leg cannot reach the foot's spot: the foot is only kept as near it as the leg reaches).
         /// </summary>
@@ -130,7 +130,7 @@ namespace DeltaInterpolator.Core.Feet
             return _segment[channel * _capacity + frame] != 0 && !_beyondReach[channel * _capacity + frame] && !_beyondReach[(channel ^ 1) * _capacity + frame];
         }
 
-        /// <summary>After <see cref="Plan"/>: how strongly (0..1) foot joint <paramref name="channel"/> is held on <paramref name="frame"/>.</summary>
+        /// <summary>After <see cref="Plan(MotionClip, IReadOnlyList{int})"/>: how strongly (0..1) foot joint <paramref name="channel"/> is held on <paramref name="frame"/>.</summary>
         public double LockWeight(int frame, int channel)
         {
             if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
@@ -138,7 +138,7 @@ namespace DeltaInterpolator.Core.Feet
             return _weight[channel * _capacity + frame];
         }
 
-        /// <summary>After <see cref="Plan"/>: the ground height the locker estimated under foot joint <paramref name="channel"/> on <paramref name="frame"/>.</summary>
+        /// <summary>After <see cref="Plan(MotionClip, IReadOnlyList{int})"/>: the ground height the locker estimated under foot joint <paramref name="channel"/> on <paramref name="frame"/>.</summary>
         public double GroundHeight(int frame, int channel)
         {
             if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
@@ -146,18 +146,38 @@ namespace DeltaInterpolator.Core.Feet
             return _ground[channel * _capacity + frame];
         }
 
-        /// <summary>After <see cref="Plan"/>: foot joint <paramref name="channel"/>'s planted height above the ground (clip units).</summary>
+        /// <summary>After planning: where foot joint <paramref name="channel"/> is held on <paramref name="frame"/> (meaningful where <see cref="LockWeight"/> is above 0).</summary>
+        internal Vector3D HeldAt(int frame, int channel)
+        {
+            if ((uint)frame >= (uint)_frames) throw new ArgumentOutOfRangeException(nameof(frame), $"frame {frame}; expected 0..{_frames - 1}");
+            if ((uint)channel >= ChannelCount) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
+            return Vector3D.Read(_anchor, (channel * _capacity + frame) * 3);
+        }
+
+        /// <summary>After <see cref="Plan(MotionClip, IReadOnlyList{int})"/>: foot joint <paramref name="channel"/>'s planted height above the ground (clip units).</summary>
         public double PlantedHeight(int channel) => _plantedHeight[channel];
 
         /// <summary>Plans and locks every non-key frame of <paramref name="clip"/> in place.</summary>
         /// <param name="clip">Motion on the rig's skeleton (e.g. a bake: key frames and filled frames).</param>
         /// <param name="keys">Frame indices of <paramref name="clip"/> that are keys (increasing, at least one): never changed, and the source of the ground.</param>
-        public void Lock(MotionClip clip, IReadOnlyList<int> keys) => LockWithContacts(clip, keys, null);
+        public void Lock(MotionClip clip, IReadOnlyList<int> keys) => Lock(clip, keys, null);
 
-        /// <summary><see cref="Lock"/> with the contacts given (<see cref="PlanWithContacts"/>), or labelled when null.</summary>
-        internal void LockWithContacts(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts)
+        /// <summary>
+        /// <see cref="Lock(MotionClip, IReadOnlyList{int})"/> with the contacts of the one contact source: on every frame
+        /// <paramref name="contacts"/> has a prediction for (a model with a contact output filled it) a foot joint is
+        /// planted where the prediction says; elsewhere (keys, SLERP's frames, null) the locker labels it.
+        /// </summary>
+        /// <param name="clip">Motion on the rig's skeleton.</param>
+        /// <param name="keys">Frame indices of <paramref name="clip"/> that are keys.</param>
+        /// <param name="contacts">Predicted contacts for the clip's frames (<see cref="FootContacts.FrameCount"/> = the clip's), or null.</param>
+        public void Lock(MotionClip clip, IReadOnlyList<int> keys, FootContacts? contacts) => LockFrames(clip, keys, null, contacts);
+
+        /// <summary><see cref="Lock(MotionClip, IReadOnlyList{int})"/> with the contacts given (<see cref="PlanWithContacts"/>), or labelled when null.</summary>
+        internal void LockWithContacts(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts) => LockFrames(clip, keys, contacts, null);
+
+        private void LockFrames(MotionClip clip, IReadOnlyList<int> keys, bool[]? given, FootContacts? predicted)
         {
-            PlanWithContacts(clip, keys, contacts);
+            Plan(clip, keys, given, predicted);
             for (int f = 0; f < _frames; f++)
             {
                 if (_isKey[f]) continue;
@@ -169,18 +189,24 @@ namespace DeltaInterpolator.Core.Feet
         /// Labels contacts and chooses where each planted joint is held on every frame of <paramref name="clip"/>,
         /// without changing it; <see cref="LockFrame"/> then applies one frame.
         /// </summary>
-        public void Plan(MotionClip clip, IReadOnlyList<int> keys) => PlanWithContacts(clip, keys, null);
+        public void Plan(MotionClip clip, IReadOnlyList<int> keys) => Plan(clip, keys, null, null);
+
+        /// <summary><see cref="Plan(MotionClip, IReadOnlyList{int})"/> with predicted contacts where <paramref name="contacts"/> has them (see <see cref="Lock(MotionClip, IReadOnlyList{int}, FootContacts)"/>).</summary>
+        public void Plan(MotionClip clip, IReadOnlyList<int> keys, FootContacts? contacts) => Plan(clip, keys, null, contacts);
 
         /// <summary>
-        /// <see cref="Plan"/> with the contacts given instead of labelled (when not null): frames ×
+        /// <see cref="Plan(MotionClip, IReadOnlyList{int})"/> with the contacts given instead of labelled (when not null): frames ×
         /// <see cref="ChannelCount"/> flags (a run of set flags is one contact). Everything after labelling — where a
         /// joint is held, reach, easing — is the same. The analysis of the locker alone (Tools~/Tests'
         /// FootLockingAnalysis) gives it the truth's contacts, to separate what locking reaches with contacts known
         /// from what labelling them from the filled motion loses.
         /// </summary>
-        internal void PlanWithContacts(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts)
+        internal void PlanWithContacts(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts) => Plan(clip, keys, contacts, null);
+
+        private void Plan(MotionClip clip, IReadOnlyList<int> keys, bool[]? contacts, FootContacts? predicted)
         {
             if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (predicted != null && predicted.FrameCount != clip.FrameCount) throw new ArgumentException($"contacts for {predicted.FrameCount} frames; expected the clip's {clip.FrameCount}", nameof(predicted));
             if (contacts != null && contacts.Length != clip.FrameCount * ChannelCount) throw new ArgumentException($"{contacts.Length} contact flags; expected frames × {ChannelCount} = {clip.FrameCount * ChannelCount}", nameof(contacts));
             if (keys == null || keys.Count == 0) throw new ArgumentException("expected at least one key frame", nameof(keys));
             if (!clip.Skeleton.HasSameHierarchy(_rig.Skeleton)) throw new ArgumentException("the clip is not on the rig's skeleton", nameof(clip));
@@ -217,6 +243,7 @@ namespace DeltaInterpolator.Core.Feet
                 LabelFromKeys(c, leg, keys, ease, dt, ref next);
                 LabelFree(c, leg, dt, minFrames, ref next);
                 if (contacts != null) Given(c, contacts, ref next);
+                else if (predicted != null && predicted.AnyPredicted) Predicted(c, predicted, ref next);
                 Separate(c, ease);
                 Anchor(c, leg);
                 PullIntoReach(c);
@@ -227,7 +254,7 @@ namespace DeltaInterpolator.Core.Feet
         }
 
         /// <summary>
-        /// Locks one frame in place (allocation-free): after <see cref="Plan"/>, moves the legs of frame
+        /// Locks one frame in place (allocation-free): after <see cref="Plan(MotionClip, IReadOnlyList{int})"/>, moves the legs of frame
         /// <paramref name="frame"/> so that its planted joints reach their targets. Changes the thigh, knee and
         /// ankle rotations of a leg with a planted joint; nothing else.
         /// </summary>
@@ -324,7 +351,7 @@ namespace DeltaInterpolator.Core.Feet
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                double foot = leg.HasToe ? Vector3D.Read(rig.Skeleton.OffsetSpan, 3 * leg.Toe).Length : 0;
+                double foot = leg.HasToe ? rig.RestLength(leg.Ankle, leg.Toe) : 0;
                 heights[2 * side] = (0.5 * foot) / rig.LegLength + 0.01;
                 heights[2 * side + 1] = 0.01;
             }

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Feet
@@ -130,6 +131,71 @@ namespace DeltaInterpolator.Core.Feet
                 m.HasToe && !map.IsSynthesized(m.Toe) ? map.SourceJointOf(m.Toe) : -1);
             Skeleton target = map.Target;
             return new FootRig(map.Source, Source(ModelLeg(target, "Left")), Source(ModelLeg(target, "Right")), map.SourceLegLength);
+        }
+
+        /// <summary>
+        /// The rig of <paramref name="map"/>'s source (<see cref="ForSource"/>) when foot locking can hold its feet:
+        /// each leg's thigh, knee and ankle are source joints (not synthesized by the map) and each lies below the
+        /// one before (joints between them, such as a twist joint in the thigh, are carried along). Otherwise null,
+        /// with <paramref name="problem"/> saying which leg and why, for one warning instead of an exception.
+        /// </summary>
+        public static FootRig? TryForSource(SkeletonMap map, out string? problem)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            Skeleton target = map.Target;
+            for (int side = 0; side < 2; side++)
+            {
+                string name = side == 0 ? "Left" : "Right";
+                foreach (string joint in new[] { "UpLeg", "Leg", "Foot" })
+                {
+                    int t = target.IndexOf(name + joint);
+                    if (t < 0 || map.IsSynthesized(t) || map.SourceJointOf(t) < 0)
+                    {
+                        problem = $"the rig has no joint for the model's {name + joint} (the joint map synthesizes it), so its {name.ToLowerInvariant()} leg has no knee or ankle to bend";
+                        return null;
+                    }
+                }
+            }
+
+            FootRig rig = ForSource(map);
+            problem = ChainProblem(rig.Skeleton, rig.Left, 0) ?? ChainProblem(rig.Skeleton, rig.Right, 1);
+            return problem == null ? rig : null;
+        }
+
+        /// <summary>
+        /// Null when <paramref name="leg"/> can be bent by two-bone IK: the knee below the thigh, the ankle below the
+        /// knee and the toe (if any) below the ankle, directly or through other joints; otherwise what is wrong.
+        /// </summary>
+        internal static string? ChainProblem(Skeleton skeleton, Leg leg, int side)
+        {
+            string Name(int j) => skeleton.Names[j];
+            string which = side == 0 ? "left" : "right";
+            if (!IsBelow(skeleton, leg.Knee, leg.Hip)) return $"the {which} leg's knee {Name(leg.Knee)} is not below its thigh {Name(leg.Hip)}";
+            if (!IsBelow(skeleton, leg.Ankle, leg.Knee)) return $"the {which} leg's ankle {Name(leg.Ankle)} is not below its knee {Name(leg.Knee)}";
+            if (leg.HasToe && !IsBelow(skeleton, leg.Toe, leg.Ankle)) return $"the {which} leg's toe {Name(leg.Toe)} is not below its ankle {Name(leg.Ankle)}";
+            return null;
+        }
+
+        /// <summary>
+        /// The rest-pose length from <paramref name="ancestor"/> to <paramref name="joint"/> below it: the length of the
+        /// summed offsets along the path (every rotation is identity at rest), so a joint between them (a twist joint in
+        /// the thigh) does not shorten the bone; for a direct child, its offset's length.
+        /// </summary>
+        internal double RestLength(int ancestor, int joint)
+        {
+            Vector3D sum = Vector3D.Zero;
+            for (int j = joint; j >= 0 && j != ancestor; j = Skeleton.Parents[j]) sum = sum + Vector3D.Read(Skeleton.OffsetSpan, 3 * j);
+            return sum.Length;
+        }
+
+        private static bool IsBelow(Skeleton skeleton, int joint, int ancestor)
+        {
+            for (int j = skeleton.Parents[joint]; j >= 0; j = skeleton.Parents[j])
+            {
+                if (j == ancestor) return true;
+            }
+
+            return false;
         }
 
         private static Leg ModelLeg(Skeleton skeleton, string side)

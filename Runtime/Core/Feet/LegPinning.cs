@@ -24,16 +24,18 @@ namespace DeltaInterpolator.Core.Feet
         private readonly double[] _globalPositions;
         private readonly double[] _globalRotations;
 
-        /// <exception cref="ArgumentException">A leg is not a chain thigh → knee → ankle (→ toe): the solve rotates each joint about its parent.</exception>
+        /// <exception cref="ArgumentException">A leg is not a chain thigh → knee → ankle (→ toe), each joint below the one before (<see cref="FootRig.ChainProblem"/>).</exception>
         public LegPinning(FootRig rig)
         {
             Skeleton s = rig.Skeleton;
             for (int side = 0; side < 2; side++)
             {
-                Leg leg = rig[side];
-                if (s.Parents[leg.Knee] != leg.Hip || s.Parents[leg.Ankle] != leg.Knee || (leg.HasToe && s.Parents[leg.Toe] != leg.Ankle))
+                // Joints between them (a twist joint in the thigh) are allowed: they keep their local rotations and
+                // ride along, and SolveLeg writes the knee and ankle relative to their own parents.
+                string? problem = FootRig.ChainProblem(s, rig[side], side);
+                if (problem != null)
                 {
-                    throw new ArgumentException($"the {(side == 0 ? "left" : "right")} leg ({s.Names[leg.Hip]}, {s.Names[leg.Knee]}, {s.Names[leg.Ankle]}) is not a chain of parent and child joints; expected thigh → knee → ankle (→ toe), as on the model's skeleton", nameof(rig));
+                    throw new ArgumentException(problem + "; expected thigh → knee → ankle (→ toe), each below the one before, as on the model's skeleton", nameof(rig));
                 }
             }
 
@@ -145,8 +147,23 @@ namespace DeltaInterpolator.Core.Feet
             TwoBoneIk.Solve(hip, knee, ankle, hipGlobal, kneeGlobal, target, hint, out QuaternionD newHip, out QuaternionD newKnee);
             QuaternionD parentGlobal = QuaternionD.Read(_globalRotations, 4 * parent);
             Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(parentGlobal), newHip)).Write(localRotations, 4 * leg.Hip);
-            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newHip), newKnee)).Write(localRotations, 4 * leg.Knee);
-            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(newKnee), footWanted)).Write(localRotations, 4 * leg.Ankle);
+            QuaternionD kneeParent = NewParentGlobal(leg.Knee, leg.Hip, hipGlobal, newHip);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(kneeParent), newKnee)).Write(localRotations, 4 * leg.Knee);
+            QuaternionD ankleParent = NewParentGlobal(leg.Ankle, leg.Knee, kneeGlobal, newKnee);
+            Quaternions.Normalize(Quaternions.Multiply(Quaternions.Conjugate(ankleParent), footWanted)).Write(localRotations, 4 * leg.Ankle);
+        }
+
+        /// <summary>
+        /// The global rotation of <paramref name="joint"/>'s parent once <paramref name="solved"/> turned from
+        /// <paramref name="oldGlobal"/> to <paramref name="newGlobal"/>: the solved joint itself when it is the parent,
+        /// otherwise the parent turned with it (the joints between keep their local rotations).
+        /// </summary>
+        private QuaternionD NewParentGlobal(int joint, int solved, QuaternionD oldGlobal, QuaternionD newGlobal)
+        {
+            int parent = _rig.Skeleton.Parents[joint];
+            if (parent == solved) return newGlobal;
+            QuaternionD turn = Quaternions.Multiply(newGlobal, Quaternions.Conjugate(oldGlobal));
+            return Quaternions.Normalize(Quaternions.Multiply(turn, QuaternionD.Read(_globalRotations, 4 * parent)));
         }
 
         internal static Vector3D Lerp(Vector3D a, Vector3D b, double t) => a + t * (b - a);

@@ -63,6 +63,8 @@ namespace DeltaInterpolator.Core.Feet
         private readonly double[] _weight = new double[Channels];
         private readonly double[] _shownWeight = new double[Channels];
         private readonly double[] _previous = new double[3 * Channels];
+        private readonly bool[] _predicted = new bool[Channels]; // this pose's predicted contacts, when _hasPrediction
+        private bool _hasPrediction;
         private double _groundStart;
         private double _groundTarget;
         private double _startTime;
@@ -90,7 +92,7 @@ namespace DeltaInterpolator.Core.Feet
             for (int side = 0; side < 2; side++)
             {
                 Leg leg = rig[side];
-                _legReach[side] = Vector3D.Read(s.OffsetSpan, 3 * leg.Knee).Length + Vector3D.Read(s.OffsetSpan, 3 * leg.Ankle).Length;
+                _legReach[side] = rig.RestLength(leg.Hip, leg.Knee) + rig.RestLength(leg.Knee, leg.Ankle);
             }
 
             FootLocker.StandingHeights(rig, _maxPlantedHeight);
@@ -104,12 +106,15 @@ namespace DeltaInterpolator.Core.Feet
         /// <summary>True between <see cref="Begin"/> and <see cref="End"/>.</summary>
         public bool IsActive => _active;
 
-        /// <summary>After <see cref="LockPose"/>: how strongly (0..1) foot joint <paramref name="channel"/> (0 left ankle, 1 left toe, 2 right ankle, 3 right toe) was held in the pose.</summary>
+        /// <summary>After <see cref="LockPose(double, ReadOnlySpan{double}, Span{double})"/>: how strongly (0..1) foot joint <paramref name="channel"/> (0 left ankle, 1 left toe, 2 right ankle, 3 right toe) was held in the pose.</summary>
         public double LockWeight(int channel)
         {
             if ((uint)channel >= Channels) throw new ArgumentOutOfRangeException(nameof(channel), "expected a channel 0..3");
             return _shownWeight[channel];
         }
+
+        /// <summary>True when the last pose locked was given the model's predicted contacts (else its contacts were labelled).</summary>
+        public bool LastPosePredicted => _active && _hasPrediction;
 
         /// <summary>Whether foot joint <paramref name="channel"/> was in a contact (not easing) in the last pose locked.</summary>
         public bool IsPlanted(int channel)
@@ -170,9 +175,27 @@ namespace DeltaInterpolator.Core.Feet
         /// <param name="time">The frame time (seconds, same clock as <see cref="Begin"/>).</param>
         /// <param name="root">The pose's root position.</param>
         /// <param name="rotations">The pose's local rotations (joints × 4), changed in place.</param>
-        public void LockPose(double time, ReadOnlySpan<double> root, Span<double> rotations)
+        public void LockPose(double time, ReadOnlySpan<double> root, Span<double> rotations) => LockPose(time, root, rotations, default, 0);
+
+        /// <summary>
+        /// <see cref="LockPose(double, ReadOnlySpan{double}, Span{double})"/> with the contacts of the one contact source
+        /// (<see cref="FootContacts"/>): a model's predicted probabilities for this pose's four foot joints
+        /// (<paramref name="contacts"/>, planted at or above <paramref name="threshold"/>) decide when a joint touches down
+        /// and lifts off, instead of the height and speed hysteresis; empty (SLERP, a model without them, a frame not
+        /// decoded yet) labels them as before. Where a joint is held, reach and easing are the same. Allocation-free.
+        /// </summary>
+        /// <exception cref="ArgumentException">Contacts given that are not 4 probabilities, or a threshold not in (0, 1).</exception>
+        public void LockPose(double time, ReadOnlySpan<double> root, Span<double> rotations, ReadOnlySpan<float> contacts, double threshold)
         {
             if (!_active) return;
+            _hasPrediction = !contacts.IsEmpty;
+            if (_hasPrediction)
+            {
+                if (contacts.Length != Channels) throw new ArgumentException($"{contacts.Length} contact probabilities; expected {Channels} (left ankle, left toe, right ankle, right toe)", nameof(contacts));
+                if (!(threshold > 0 && threshold < 1)) throw new ArgumentOutOfRangeException(nameof(threshold), threshold, "expected a probability strictly between 0 and 1");
+                for (int c = 0; c < Channels; c++) _predicted[c] = contacts[c] >= threshold;
+            }
+
             double leg = _rig.LegLength;
             double dt = time - _previousTime;
             double u = Math.Max(0, Math.Min(1, (time - _startTime) / (_targetTime - _startTime)));
@@ -247,7 +270,7 @@ namespace DeltaInterpolator.Core.Feet
                     {
                         // A foot standing through the transition: its spot moves from the start's to the target's.
                         LegPinning.Lerp(Vector3D.Read(_startSpot, 3 * c), Vector3D.Read(_targetSpot, 3 * c), u).Write(_anchor, 3 * c);
-                        holds = rise <= _settings.StepHeight * leg;
+                        holds = _hasPrediction ? _predicted[c] : rise <= _settings.StepHeight * leg;
                     }
                     else if (_onTarget[c])
                     {
@@ -257,8 +280,8 @@ namespace DeltaInterpolator.Core.Feet
                     else
                     {
                         bool near = HorizontalDistance(p, Vector3D.Read(_anchor, 3 * c)) <= _settings.HoldDistance * leg;
-                        holds = near && (_fromStart[c]
-                            ? rise <= _settings.ExitHeight * leg && speed <= _settings.HoldSpeed * leg
+                        holds = near && (_hasPrediction ? _predicted[c]
+                            : _fromStart[c] ? rise <= _settings.ExitHeight * leg && speed <= _settings.HoldSpeed * leg
                             : FootLocker.NextPlanted(true, rise / leg, speed / leg, _settings));
                     }
 
@@ -276,7 +299,7 @@ namespace DeltaInterpolator.Core.Feet
                 case ContactState.Releasing:
                     // Planted again near the spot it is leaving (a flicker on the thresholds): the same contact goes on.
                     // A contact elsewhere waits until this one has eased out, so the joint moves from spot to spot.
-                    if (FootLocker.NextPlanted(false, rise / leg, speed / leg, _settings) && HorizontalDistance(p, Vector3D.Read(_anchor, 3 * c)) <= _settings.BridgeDistance * leg)
+                    if (TouchesDown(c, rise, speed, leg) && HorizontalDistance(p, Vector3D.Read(_anchor, 3 * c)) <= _settings.BridgeDistance * leg)
                     {
                         _state[c] = ContactState.Held;
                         _weight[c] = Math.Min(1, _weight[c] + step);
@@ -297,7 +320,7 @@ namespace DeltaInterpolator.Core.Feet
         /// <summary>A free joint that the hysteresis plants: held where it touched down, or on the target's spot when that is near.</summary>
         private bool TryTouchDown(int c, Vector3D p, double rise, double speed, double leg)
         {
-            if (!FootLocker.NextPlanted(false, rise / leg, speed / leg, _settings)) return false;
+            if (!TouchesDown(c, rise, speed, leg)) return false;
             _state[c] = ContactState.Held;
             _fromStart[c] = false;
             _bridged[c] = false;
@@ -336,6 +359,10 @@ namespace DeltaInterpolator.Core.Feet
                 Array.Copy(_targetSpot, 3 * other, _anchor, 3 * other, 3);
             }
         }
+
+        /// <summary>A free joint touches down: where the model predicts it this pose, else by the hysteresis on height and speed.</summary>
+        private bool TouchesDown(int c, double rise, double speed, double leg) =>
+            _hasPrediction ? _predicted[c] : FootLocker.NextPlanted(false, rise / leg, speed / leg, _settings);
 
         private void Release(int c)
         {

@@ -15,7 +15,7 @@ namespace DeltaInterpolator.Core.Feet
     /// e.g. the foot's forward direction) then supplies it, blended in smoothly so that the knee never flips.
     /// Written in world space: rotating a joint's global rotation by R turns everything below it by R.
     /// </remarks>
-    internal static class TwoBoneIk
+    public static class TwoBoneIk
     {
         /// <summary>How straight the leg may get: the hip–ankle distance is at most this fraction of thigh + shin.</summary>
         public const double MaxExtension = 0.99999;

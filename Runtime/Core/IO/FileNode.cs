@@ -17,7 +17,7 @@ namespace DeltaInterpolator.Core.IO
     /// that shim is missing (Windows, an older Mono) it falls back to the managed answer: a directory, a
     /// file (taken as regular) or nothing.
     /// </remarks>
-    internal readonly struct FileNode
+    public readonly struct FileNode
     {
         // FileStatus of libSystem.Native (src/native/libs/System.Native/pal_io.h): Mode at byte 4; Dev, Ino
         // at bytes 88 and 104 since the nanosecond and RDev fields were added (.NET 8 and later).

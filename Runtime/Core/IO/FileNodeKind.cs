@@ -1,7 +1,7 @@
 namespace DeltaInterpolator.Core.IO
 {
     /// <summary>What a path names in the file system, as far as reading and writing files care.</summary>
-    internal enum FileNodeKind
+    public enum FileNodeKind
     {
         /// <summary>Nothing is there.</summary>
         Missing,

@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Core.IO
     /// write everything to a temporary file beside it and rename it into place (<see cref="Write"/>), so a
     /// failing or interrupted write leaves an existing file byte-identical and never leaves half a file.
     /// </summary>
-    internal static class OutputFile
+    public static class OutputFile
     {
         // Full paths that Check found missing: Write must then create them exclusively, so that a file that
         // appeared meanwhile (a second run writing the same new path) is never silently replaced.

@@ -6,7 +6,7 @@ namespace DeltaInterpolator.Core.IO
     /// An output path that cannot or must not be written (exists without <c>--force</c>, is an input, is a
     /// folder, is not writable). The message reads <c>PATH: what was wrong; what was expected</c>.
     /// </summary>
-    internal sealed class OutputPathException : Exception
+    public sealed class OutputPathException : Exception
     {
         /// <summary>Creates the exception from its parts.</summary>
         public OutputPathException(string path, string problem, string expected)

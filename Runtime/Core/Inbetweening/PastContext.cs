@@ -16,7 +16,7 @@ namespace DeltaInterpolator.Core.Inbetweening
         /// enough exist; otherwise the available ones (<see cref="ShortContextPolicy.FeedAvailable"/>) or
         /// the wanted count, padded (<see cref="ShortContextPolicy.RepeatEarliest"/>).
         /// </summary>
-        public static int KeyCount(int available, int wanted, ShortContextPolicy policy)
+        public static int PastFrames(int available, int wanted, ShortContextPolicy policy)
         {
             if (available < 1) throw new ArgumentOutOfRangeException(nameof(available), "at least one past frame must exist");
             if (wanted < 1) throw new ArgumentOutOfRangeException(nameof(wanted), "at least one past frame must be wanted");

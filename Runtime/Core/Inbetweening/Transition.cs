@@ -28,7 +28,11 @@ namespace DeltaInterpolator.Core.Inbetweening
             KeyLocalRotations = new double[(pastFrames + 1) * j * 4];
             RootPositions = new double[missingFrames * 3];
             LocalRotations = new double[missingFrames * j * 4];
+            FootContacts = new float[missingFrames * ContactChannels];
         }
+
+        /// <summary>Foot joints a model may predict contacts for: left ankle, left toe, right ankle, right toe.</summary>
+        public const int ContactChannels = 4;
 
         /// <summary>Hierarchy and offsets the frames refer to.</summary>
         public Skeleton Skeleton { get; }
@@ -56,5 +60,17 @@ namespace DeltaInterpolator.Core.Inbetweening
 
         /// <summary>Output: local rotations of the missing frames, n × joints × 4.</summary>
         public double[] LocalRotations { get; }
+
+        /// <summary>
+        /// Output of an in-betweener that predicts foot contacts (<see cref="HasFootContacts"/>): n × 4 probabilities
+        /// that the left ankle, left toe, right ankle and right toe are planted on each missing frame.
+        /// </summary>
+        public float[] FootContacts { get; }
+
+        /// <summary>True when the in-betweener that filled the frames wrote <see cref="FootContacts"/> (a model with a contact output; never SLERP).</summary>
+        public bool HasFootContacts { get; set; }
+
+        /// <summary>With <see cref="HasFootContacts"/>: the probability at or above which a foot joint is planted (the model's, chosen on validation).</summary>
+        public double ContactThreshold { get; set; }
     }
 }

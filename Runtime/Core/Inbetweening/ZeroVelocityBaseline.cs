@@ -6,7 +6,7 @@ namespace DeltaInterpolator.Core.Inbetweening
     /// The official zero-velocity baseline: every missing frame repeats the last past key frame's root
     /// position and local rotations (the pose freezes, then snaps to the target).
     /// </summary>
-    internal sealed class ZeroVelocityBaseline : IInbetweener
+    public sealed class ZeroVelocityBaseline : IInbetweener
     {
         /// <inheritdoc />
         public string Id => "zerovel";

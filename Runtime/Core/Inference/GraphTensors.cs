@@ -19,18 +19,19 @@ namespace DeltaInterpolator.Core.Inference
     /// <item><term>frame</term><description><see cref="KeyMemory"/>, <see cref="QueryFrameIndices"/>,
     /// <see cref="GapLength"/> → <see cref="RootPositionDelta"/>, <see cref="Rotation6DDelta"/></description></item>
     /// </list>
+    /// <para>The whole and frame graphs of a model with contacts (contract version 3) also give <see cref="FootContacts"/>.</para>
     /// <para>With constants, the three constant outputs (contract version, joint count, key-feature size)
     /// are added to <see cref="Outputs"/>, for the load-time probe. Models with input Δ-mode <c>none</c>
     /// (a <c>query_features</c> input) are refused by <see cref="ModelChecks"/>, so no tensor is built for it.</para>
     /// <para>Allocates once at creation; nothing afterwards.</para>
     /// </remarks>
-    internal sealed class GraphTensors
+    public sealed class GraphTensors
     {
         private readonly InferenceTensor[] _inputs;
         private readonly InferenceTensor[] _outputs;
 
         private GraphTensors(ModelGraphKind graph, int pastFrames, int missingFrames, int queryFrames, InferenceTensor? keyFeatures, InferenceTensor? keyFrameIndices,
-            InferenceTensor? queryFrameIndices, InferenceTensor gapLength, InferenceTensor? keyMemory, InferenceTensor? rootDelta, InferenceTensor? rotationDelta, bool constants,
+            InferenceTensor? queryFrameIndices, InferenceTensor gapLength, InferenceTensor? keyMemory, InferenceTensor? rootDelta, InferenceTensor? rotationDelta, InferenceTensor? footContacts, bool constants,
             int batch = 1, bool fill = true)
         {
             Graph = graph;
@@ -45,6 +46,7 @@ namespace DeltaInterpolator.Core.Inference
             KeyMemory = keyMemory;
             RootPositionDelta = rootDelta;
             Rotation6DDelta = rotationDelta;
+            FootContacts = footContacts;
             var inputs = new List<InferenceTensor>(4);
             var outputs = new List<InferenceTensor>(5);
             switch (graph)
@@ -52,6 +54,7 @@ namespace DeltaInterpolator.Core.Inference
                 case ModelGraphKind.Whole:
                     inputs.AddRange(new[] { keyFeatures!, keyFrameIndices!, queryFrameIndices!, gapLength });
                     outputs.AddRange(new[] { rootDelta!, rotationDelta! });
+                    if (footContacts != null) outputs.Add(footContacts);
                     break;
                 case ModelGraphKind.Keys:
                     inputs.AddRange(new[] { keyFeatures!, keyFrameIndices!, gapLength });
@@ -60,6 +63,7 @@ namespace DeltaInterpolator.Core.Inference
                 default:
                     inputs.AddRange(new[] { keyMemory!, queryFrameIndices!, gapLength });
                     outputs.AddRange(new[] { rootDelta!, rotationDelta! });
+                    if (footContacts != null) outputs.Add(footContacts);
                     break;
             }
 
@@ -119,6 +123,9 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>float32 [B, N, J, 6]; null for the keys graph.</summary>
         public InferenceTensor? Rotation6DDelta { get; }
 
+        /// <summary>float32 [B, N, 4], the predicted contact probabilities, when the model has them (<see cref="ModelContract.HasFootContacts"/>); else null, as for the keys graph.</summary>
+        public InferenceTensor? FootContacts { get; }
+
         /// <summary>Constant output int64 [1], when created with constants.</summary>
         public InferenceTensor? ContractVersion { get; }
 
@@ -160,11 +167,11 @@ namespace DeltaInterpolator.Core.Inference
                 case ModelGraphKind.Whole:
                     if (queryFrames < 1 || queryFrames > missingFrames) throw new ArgumentOutOfRangeException(nameof(queryFrames), $"N = {queryFrames}; expected 1..{missingFrames}");
                     return new GraphTensors(graph, pastFrames, missingFrames, queryFrames, features, keyFrames, Query(contract, batch, queryFrames), gap,
-                        null, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), constants, batch);
+                        null, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), Contacts(contract, batch, queryFrames), constants, batch);
                 case ModelGraphKind.Keys:
                     ModelArchitecture a = contract.Architecture;
                     var memory = b ? InferenceTensor.Float(TensorNames.KeyMemory, batch, a.Blocks, 2, keys, a.Width) : InferenceTensor.Float(TensorNames.KeyMemory, a.Blocks, 2, keys, a.Width);
-                    return new GraphTensors(graph, pastFrames, missingFrames, 0, features, keyFrames, null, gap, memory, null, null, constants, batch);
+                    return new GraphTensors(graph, pastFrames, missingFrames, 0, features, keyFrames, null, gap, memory, null, null, null, constants, batch);
                 default:
                     throw new ArgumentException("the frame graph's tensors share the keys graph's key_memory and gap_length: use GraphTensors.ForFrame(keys, …)", nameof(graph));
             }
@@ -182,7 +189,7 @@ namespace DeltaInterpolator.Core.Inference
             if (queryFrames < 1 || queryFrames > keys.MissingFrames) throw new ArgumentOutOfRangeException(nameof(queryFrames), $"N = {queryFrames}; expected 1..{keys.MissingFrames}");
             int batch = keys.Batch;
             return new GraphTensors(ModelGraphKind.Frame, keys.PastFrames, keys.MissingFrames, queryFrames, null, null, Query(contract, batch, queryFrames),
-                keys.GapLength, keys.KeyMemory, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), constants, batch);
+                keys.GapLength, keys.KeyMemory, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), Contacts(contract, batch, queryFrames), constants, batch);
         }
 
         /// <summary>
@@ -199,7 +206,7 @@ namespace DeltaInterpolator.Core.Inference
             if (queryFrames < 1) throw new ArgumentOutOfRangeException(nameof(queryFrames), queryFrames, "expected at least one query frame");
             InferenceTensor memory = batch == keys.Batch ? keys.KeyMemory! : keys.KeyMemory!.Prefix(batch);
             return new GraphTensors(ModelGraphKind.Frame, keys.PastFrames, queryFrames, queryFrames, null, null, Query(contract, batch, queryFrames),
-                InferenceTensor.Int64(TensorNames.GapLength, batch), memory, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), false, batch);
+                InferenceTensor.Int64(TensorNames.GapLength, batch), memory, RootDelta(batch, queryFrames), RotationDelta(contract, batch, queryFrames), Contacts(contract, batch, queryFrames), false, batch);
         }
 
         /// <summary>
@@ -212,7 +219,7 @@ namespace DeltaInterpolator.Core.Inference
             if (rows == Batch) return this;
             if (ContractVersion != null) throw new InvalidOperationException("constant outputs are for the probe run only");
             return new GraphTensors(Graph, PastFrames, MissingFrames, QueryFrameCount, KeyFeatures?.Prefix(rows), KeyFrameIndices?.Prefix(rows), QueryFrameIndices?.Prefix(rows),
-                GapLength.Prefix(rows), KeyMemory?.Prefix(rows), RootPositionDelta?.Prefix(rows), Rotation6DDelta?.Prefix(rows), false, rows, fill: false);
+                GapLength.Prefix(rows), KeyMemory?.Prefix(rows), RootPositionDelta?.Prefix(rows), Rotation6DDelta?.Prefix(rows), FootContacts?.Prefix(rows), false, rows, fill: false);
         }
 
         /// <summary>Writes row <paramref name="row"/>'s key frame indices 0..P−1, P+n and its gap length n (rows of one batch may differ in n).</summary>
@@ -290,6 +297,9 @@ namespace DeltaInterpolator.Core.Inference
             contract.HasBatchAxis ? InferenceTensor.Int64(TensorNames.QueryFrameIndices, batch, queryFrames) : InferenceTensor.Int64(TensorNames.QueryFrameIndices, queryFrames);
 
         private static InferenceTensor RootDelta(int batch, int queryFrames) => InferenceTensor.Float(TensorNames.RootPositionDelta, batch, queryFrames, 3);
+
+        private static InferenceTensor? Contacts(ModelContract contract, int batch, int queryFrames) =>
+            contract.HasFootContacts ? InferenceTensor.Float(TensorNames.FootContacts, batch, queryFrames, ModelContract.ContactChannelCount) : null;
 
         private static InferenceTensor RotationDelta(ModelContract contract, int batch, int queryFrames) => InferenceTensor.Float(TensorNames.Rotation6DDelta, batch, queryFrames, contract.JointCount, 6);
     }

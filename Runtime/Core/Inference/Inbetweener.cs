@@ -26,8 +26,8 @@ namespace DeltaInterpolator.Core.Inference
         private readonly IInferenceBackend? _keys;
         private readonly IInferenceBackend? _frame;
         private readonly RowDecoder _rows;
-        private readonly Dictionary<long, Workspace> _workspaces = new Dictionary<long, Workspace>();
-        private readonly List<LazyInbetweener> _lazy = new List<LazyInbetweener>();
+        private readonly ShapeCache<Workspace> _workspaces = new ShapeCache<Workspace>();
+        private readonly ShapeCache<LazyInbetweener> _lazy = new ShapeCache<LazyInbetweener>();
         private Skeleton? _checkedSkeleton;
         private Workspace? _last;
         private bool _disposed;
@@ -150,7 +150,8 @@ namespace DeltaInterpolator.Core.Inference
 
             CheckLength(pastFrames, missingFrames);
             var lazy = new LazyInbetweener(this, _keys, _frame, pastFrames, missingFrames);
-            _lazy.Add(lazy);
+            // Held to release its bindings with the model's; each caller gets its own (it keeps its transition).
+            _lazy.Add(pastFrames, missingFrames, lazy);
             return lazy;
         }
 
@@ -159,8 +160,9 @@ namespace DeltaInterpolator.Core.Inference
         {
             if (_disposed) return;
             _disposed = true;
-            foreach (LazyInbetweener l in _lazy) l.DisposeBindings();
-            foreach (Workspace w in _workspaces.Values) w.Binding.Dispose();
+            for (int i = 0; i < _lazy.Count; i++) _lazy[i].DisposeBindings();
+            for (int i = 0; i < _workspaces.Count; i++) _workspaces[i].Binding.Dispose();
+            _lazy.Clear();
             _workspaces.Clear();
             _whole.Dispose();
             _keys?.Dispose();
@@ -200,12 +202,11 @@ namespace DeltaInterpolator.Core.Inference
             ThrowIfDisposed();
             if (t == null) throw new ArgumentNullException(nameof(t));
             CheckSkeleton(t.Skeleton);
-            long key = ((long)t.PastFrames << 32) | (uint)t.MissingFrames;
-            if (!_workspaces.TryGetValue(key, out Workspace? w))
+            Workspace? w = _workspaces.Find(t.PastFrames, t.MissingFrames);
+            if (w == null)
             {
                 CheckLength(t.PastFrames, t.MissingFrames);
-                w = new Workspace(this, _whole, t.PastFrames, t.MissingFrames);
-                _workspaces.Add(key, w);
+                w = _workspaces.Add(t.PastFrames, t.MissingFrames, new Workspace(this, _whole, t.PastFrames, t.MissingFrames));
             }
 
             _rows.Localize(t, w.Keys, w.Tensors.KeyFeatures!.Floats);
@@ -242,6 +243,12 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             contract.CheckConstants(tensors.ContractVersion!.Longs![0], tensors.JointCount!.Longs![0], tensors.KeyFeatureSize!.Longs![0]);
+            if (tensors.FootContacts != null)
+            {
+                var report = new ModelCheckReport();
+                ModelChecks.ContactProbabilities(contract, tensors.FootContacts.Floats, report);
+                report.ThrowIfErrors();
+            }
         }
 
         private void ThrowIfDisposed()

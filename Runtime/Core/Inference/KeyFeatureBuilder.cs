@@ -10,7 +10,7 @@ namespace DeltaInterpolator.Core.Inference
     /// 6D at the reference key, then the global position (FK of the localized frame, model units) minus
     /// the root position at the reference key. One instance per model; allocation-free after construction.
     /// </summary>
-    internal sealed class KeyFeatureBuilder
+    public sealed class KeyFeatureBuilder
     {
         private readonly int[] _parents;
         private readonly double[] _scaledOffsets;

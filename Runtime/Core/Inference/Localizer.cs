@@ -45,7 +45,7 @@ namespace DeltaInterpolator.Core.Inference
     /// mirror <c>localize.py</c>). The yaw is <see cref="Facing.YawToward"/>. Only the root changes: other joints' rotations are relative to their
     /// parents. Allocation-free.
     /// </summary>
-    internal static class Localizer
+    public static class Localizer
     {
         /// <summary>
         /// Localizes <paramref name="frameCount"/> frames about <paramref name="referenceFrame"/>.

@@ -61,6 +61,7 @@ namespace DeltaInterpolator.Core.Inference
                     OnlyInputs(contract, model, report, TensorNames.KeyFeatures, TensorNames.KeyFrameIndices, TensorNames.QueryFrameIndices, TensorNames.GapLength);
                     Output(contract, model, report, TensorNames.RootPositionDelta, TensorElementKind.Float32);
                     Output(contract, model, report, TensorNames.Rotation6DDelta, TensorElementKind.Float32);
+                    ContactOutput(contract, model, report);
                     break;
                 case ModelGraphKind.Keys:
                     Input(contract, model, report, TensorNames.KeyFeatures, TensorElementKind.Float32, 3, 2, kf);
@@ -76,6 +77,7 @@ namespace DeltaInterpolator.Core.Inference
                     OnlyInputs(contract, model, report, TensorNames.KeyMemory, TensorNames.QueryFrameIndices, TensorNames.GapLength);
                     Output(contract, model, report, TensorNames.RootPositionDelta, TensorElementKind.Float32);
                     Output(contract, model, report, TensorNames.Rotation6DDelta, TensorElementKind.Float32);
+                    ContactOutput(contract, model, report);
                     break;
             }
 
@@ -146,6 +148,22 @@ namespace DeltaInterpolator.Core.Inference
         }
 
         /// <summary>
+        /// Checks the <c>foot_contacts</c> a probe run gave: probabilities, so finite and within [0, 1] (a graph whose
+        /// sigmoid is missing or that computes NaN would plant or free every foot joint at random).
+        /// </summary>
+        public static void ContactProbabilities(ModelContract contract, ReadOnlySpan<float> probabilities, ModelCheckReport report)
+        {
+            for (int i = 0; i < probabilities.Length; i++)
+            {
+                float p = probabilities[i];
+                if (p >= 0 && p <= 1) continue;
+                report.Error(contract.Source, $"the graph's {TensorNames.FootContacts} output holds {(float.IsNaN(p) ? "NaN" : p.ToString("R", System.Globalization.CultureInfo.InvariantCulture))} (probe run, value {i})",
+                    "expected probabilities in [0, 1] (a sigmoid inside the graph); export the checkpoint again");
+                return;
+            }
+        }
+
+        /// <summary>
         /// Checks that another graph of the same export (keys or frame beside the whole graph) describes
         /// the same network: version, skeleton, unit scale, delta mode and architecture.
         /// </summary>
@@ -160,6 +178,9 @@ namespace DeltaInterpolator.Core.Inference
             {
                 difference = "a different architecture";
             }
+
+            else if (other.HasFootContacts != whole.HasFootContacts) difference = other.HasFootContacts ? "a foot_contacts output, which the whole graph lacks," : "no foot_contacts output, unlike the whole graph,";
+            else if (other.HasFootContacts && (other.ContactThreshold != whole.ContactThreshold || !SameNames(other.ContactJoints, whole.ContactJoints))) difference = "other contact joints or threshold";
 
             if (difference != null)
             {
@@ -183,9 +204,11 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             int largest = contract.LargestFrameIndex;
-            if (pastFrames + missingFrames > largest)
+            // In long: P + n of two ints past 2^31 − 1 wrapped to a negative sum that passed.
+            long span = (long)pastFrames + missingFrames;
+            if (span > largest)
             {
-                report.Error(src, $"P + n = {pastFrames} + {missingFrames} = {pastFrames + missingFrames} exceeds the model's largest frame index {largest}",
+                report.Error(src, $"P + n = {pastFrames} + {missingFrames} = {span} exceeds the model's largest frame index {largest}",
                     "expected P + n within the model's frame embeddings; use fewer past keys or split the gap");
             }
 
@@ -203,6 +226,82 @@ namespace DeltaInterpolator.Core.Inference
                 report.Warning(src, $"the request has a gap of {missingFrames} frames but the model was trained on gaps of {Span(nMin, nMax)} frames",
                     $"expected a gap in [{nMin}, {nMax}] for results like the model card's; {(missingFrames > nMax ? "split the gap with an intermediate key" : "use a longer gap")}, or retrain on such gaps");
             }
+        }
+
+        /// <summary>
+        /// The optional <c>foot_contacts</c> output (contract version 3) of the whole and frame graphs: float32
+        /// [B, N, 4] when the metadata names contact joints, and only then; its channels must be the legs the
+        /// foot locker finds on the model's skeleton, in its order (left ankle, left toe, right ankle, right toe).
+        /// </summary>
+        private static void ContactOutput(ModelContract c, ModelDescription model, ModelCheckReport report)
+        {
+            TensorDescription? t = model.FindOutput(TensorNames.FootContacts);
+            if (!c.HasFootContacts)
+            {
+                if (t != null)
+                {
+                    report.Error(c.Source, $"the graph has a '{TensorNames.FootContacts}' output but its metadata names no contact_joints",
+                        "expected contact_joints and contact_threshold beside a foot_contacts output (contract version 3); export the checkpoint again");
+                }
+
+                return;
+            }
+
+            if (t == null)
+            {
+                report.Error(c.Source, $"the metadata names contact_joints but the {ModelContract.GraphName(c.Graph)} graph has no output '{TensorNames.FootContacts}' (its outputs: {Names(model.Outputs)})",
+                    "expected a foot_contacts output [B, N, 4] with contact joints in the metadata; export the checkpoint again");
+                return;
+            }
+
+            int rank = c.HasBatchAxis ? 3 : 2;
+            if (t.Kind != TensorElementKind.Float32)
+            {
+                report.Error(c.Source, $"output '{TensorNames.FootContacts}' is {t.Kind}", "expected Float32 probabilities; export the checkpoint again");
+            }
+            else if (t.Shape.Count != rank || t.Shape[rank - 1] >= 0 && t.Shape[rank - 1] != ModelContract.ContactChannelCount)
+            {
+                report.Error(c.Source, $"output '{TensorNames.FootContacts}' has shape [{string.Join(", ", t.Shape)}]",
+                    $"expected [B, N, {ModelContract.ContactChannelCount}] (one probability per query frame and foot joint); export the checkpoint again");
+            }
+
+            if (!Feet.FootRig.HasModelLegs(c.Skeleton))
+            {
+                report.Error(c.Source, "the model predicts foot contacts but its skeleton has no legs the foot locker finds",
+                    "expected a skeleton with LeftUpLeg/LeftLeg/LeftFoot(/LeftToe) and the right side's; export the checkpoint without a contact head");
+                return;
+            }
+
+            var joints = new int[ModelContract.ContactChannelCount];
+            Feet.FootLocker.ChannelJoints(Feet.FootRig.ForModel(c.Skeleton), joints);
+            for (int ch = 0; ch < joints.Length; ch++)
+            {
+                string expected = joints[ch] >= 0 ? c.Skeleton.Names[joints[ch]] : "(no toe)";
+                if (!string.Equals(c.ContactJoints[ch], expected, StringComparison.Ordinal))
+                {
+                    report.Error(c.Source, $"metadata contact_joints[{ch}] is '{c.ContactJoints[ch]}' but the foot locker's channel {ch} is '{expected}'",
+                        "expected the ankle and toe of each side, left first (" + string.Join(", ", Expected(c, joints)) + "); export the checkpoint again");
+                    return;
+                }
+            }
+        }
+
+        private static string[] Expected(ModelContract c, int[] joints)
+        {
+            var names = new string[joints.Length];
+            for (int i = 0; i < joints.Length; i++) names[i] = joints[i] >= 0 ? c.Skeleton.Names[joints[i]] : "(no toe)";
+            return names;
+        }
+
+        private static bool SameNames(IReadOnlyList<string> a, IReadOnlyList<string> b)
+        {
+            if (a.Count != b.Count) return false;
+            for (int i = 0; i < a.Count; i++)
+            {
+                if (!string.Equals(a[i], b[i], StringComparison.Ordinal)) return false;
+            }
+
+            return true;
         }
 
         private static string Span(int min, int max) => min == max ? min.ToString(System.Globalization.CultureInfo.InvariantCulture) : $"{min} to {max}";

@@ -58,7 +58,16 @@ namespace DeltaInterpolator.Core.Inference
             Key(b, "embedding_dim").Append(a.EmbeddingDim.ToString(CultureInfo.InvariantCulture));
             Key(b, "embedding_size").Append(a.EmbeddingSize.ToString(CultureInfo.InvariantCulture));
             Key(b, "parameters").Append(a.Parameters.ToString(CultureInfo.InvariantCulture));
-            b.Append("}}");
+            b.Append('}');
+            if (HasFootContacts)
+            {
+                Key(b, "contact_joints").Append('[');
+                for (int c = 0; c < ContactJoints.Count; c++) b.Append(c > 0 ? ", " : "").Append(Quote(ContactJoints[c]));
+                b.Append(']');
+                Key(b, "contact_threshold").Append(Fmt(ContactThreshold));
+            }
+
+            b.Append('}');
             return b.ToString();
         }
 

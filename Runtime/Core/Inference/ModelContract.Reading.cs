@@ -130,6 +130,8 @@ namespace DeltaInterpolator.Core.Inference
                 fields.Missing("architecture");
             }
 
+            if (usable) ReadContacts(m, fields, report);
+
             var unknown = new List<string>();
             foreach (string key in m.Keys)
             {
@@ -142,6 +144,64 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             return usable;
+        }
+
+        /// <summary>
+        /// Contract version 3's optional contact fields: both or neither; four distinct joints of the skeleton and a
+        /// threshold strictly between 0 and 1 (0 would plant every frame, 1 almost none).
+        /// </summary>
+        private void ReadContacts(IReadOnlyDictionary<string, JsonValue> m, MetadataFields fields, ModelCheckReport report)
+        {
+            bool joints = m.ContainsKey("contact_joints"), threshold = m.ContainsKey("contact_threshold");
+            if (!joints && !threshold) return;
+            if (ContractVersion < FirstVersionWithContacts)
+            {
+                report.Error(Source, $"metadata has contact fields but contract version {ContractVersion}", $"expected contact_joints and contact_threshold only from contract version {FirstVersionWithContacts}; export the checkpoint again");
+                return;
+            }
+
+            if (joints != threshold)
+            {
+                report.Error(Source, $"metadata has \"{(joints ? "contact_joints" : "contact_threshold")}\" without \"{(joints ? "contact_threshold" : "contact_joints")}\"", "expected both (a model with a foot_contacts output) or neither; export the checkpoint again");
+                return;
+            }
+
+            IReadOnlyList<JsonValue>? list = fields.Array("contact_joints");
+            double t = fields.Number("contact_threshold", "contact_threshold", double.NaN);
+            if (list == null) return;
+            if (list.Count != ContactChannelCount)
+            {
+                report.Error(Source, $"metadata contact_joints has {list.Count} names", $"expected {ContactChannelCount}: the ankle and toe of each side, left first (LeftFoot, LeftToe, RightFoot, RightToe); export the checkpoint again");
+                return;
+            }
+
+            var names = new string[ContactChannelCount];
+            for (int c = 0; c < names.Length; c++)
+            {
+                int channel = c;
+                names[c] = fields.Guard(() => list[channel].ExpectString($"contact_joints[{channel}]"), "");
+                if (names[c].Length == 0) return;
+                if (Skeleton.IndexOf(names[c]) < 0)
+                {
+                    report.Error(Source, $"metadata contact_joints[{c}] is '{names[c]}', not a joint of the model's skeleton", "expected the names of the skeleton's ankle and toe joints; export the checkpoint again");
+                    return;
+                }
+
+                if (Array.IndexOf(names, names[c], 0, c) >= 0)
+                {
+                    report.Error(Source, $"metadata contact_joints names '{names[c]}' twice", "expected four different joints (each side's ankle and toe); export the checkpoint again");
+                    return;
+                }
+            }
+
+            if (!(t > 0 && t < 1))
+            {
+                report.Error(Source, $"metadata contact_threshold is {Fmt(t)}", "expected a probability strictly between 0 and 1 (the one chosen on validation); export the checkpoint again");
+                return;
+            }
+
+            ContactJoints = names;
+            ContactThreshold = t;
         }
 
         private bool ReadSkeleton(MetadataFields fields, ModelCheckReport report)

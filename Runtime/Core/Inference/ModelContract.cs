@@ -20,13 +20,13 @@ namespace DeltaInterpolator.Core.Inference
     public sealed partial class ModelContract
     {
         /// <summary>The contract version this runtime implements (Python: <c>CONTRACT_VERSION</c>).</summary>
-        public const int Version = 2;
+        public const int Version = 3;
 
         /// <summary>Oldest contract version this runtime reads.</summary>
         public const int MinSupportedVersion = 1;
 
         /// <summary>Newest contract version this runtime reads.</summary>
-        public const int MaxSupportedVersion = 2;
+        public const int MaxSupportedVersion = 3;
 
         /// <summary>Features per joint in <c>key_features</c>: local 6D rotation then global position.</summary>
         public const int FeaturesPerJoint = 9;
@@ -36,7 +36,14 @@ namespace DeltaInterpolator.Core.Inference
         {
             "contract_version", "name", "graph", "skeleton", "unit_scale", "up_axis", "facing_local_axis", "facing_target_axis",
             "rotation_6d", "quaternion_order", "output_delta_mode", "input_delta_mode", "training", "max_frame_index", "architecture",
+            "contact_joints", "contact_threshold",
         };
+
+        /// <summary>Channels of the <c>foot_contacts</c> output: left ankle, left toe, right ankle, right toe (<see cref="Feet.FootLocker.ChannelCount"/>).</summary>
+        public const int ContactChannelCount = 4;
+
+        /// <summary>The first contract version whose graphs may have a <c>foot_contacts</c> output.</summary>
+        public const int FirstVersionWithContacts = 3;
 
         private Vector3D _facingTargetAsWritten;
 
@@ -133,6 +140,19 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>The metadata JSON object as exported (for tools that pass it on, e.g. the speed harness).</summary>
         public string DescriptionJson { get; private set; } = "";
+
+        /// <summary>
+        /// Contract version 3, optional: the model-skeleton joint of each channel of the <c>foot_contacts</c> output
+        /// (metadata <c>contact_joints</c>: the ankle and toe of each side, left first, as <see cref="Feet.FootLocker"/>'s
+        /// channels); empty when the graphs predict no contacts.
+        /// </summary>
+        public IReadOnlyList<string> ContactJoints { get; private set; } = Array.Empty<string>();
+
+        /// <summary>The probability at or above which a predicted foot joint is planted (metadata <c>contact_threshold</c>, chosen on validation); 0 without contacts.</summary>
+        public double ContactThreshold { get; private set; }
+
+        /// <summary>True when the whole and frame graphs have the <c>foot_contacts</c> output (<see cref="ContactJoints"/>).</summary>
+        public bool HasFootContacts => ContactJoints.Count > 0;
 
         /// <summary>Number of joints J.</summary>
         public int JointCount => Skeleton.JointCount;

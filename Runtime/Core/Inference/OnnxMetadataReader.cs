@@ -21,6 +21,9 @@ namespace DeltaInterpolator.Core.Inference
     {
         private const int MetadataPropsField = 14;
         private const int GraphField = 7;
+        private const int GraphNodeField = 1;
+        private const int NodeOpTypeField = 4;
+        private const int NodeDomainField = 7;
         private const int WireVarint = 0;
         private const int WireFixed64 = 1;
         private const int WireLengthDelimited = 2;
@@ -75,6 +78,57 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             return metadata;
+        }
+
+        /// <summary>
+        /// The distinct operators of the model's main graph (<c>ModelProto.graph.node[*]</c>): <c>op_type</c>, or
+        /// <c>domain::op_type</c> outside the standard domain (<c>""</c> or <c>ai.onnx</c>), sorted ordinally.
+        /// Subgraphs are not entered: only a node's graph attribute holds one, and every operator that takes
+        /// one (If, Loop, Scan) lies outside the contract itself (<see cref="ModelOperators"/>).
+        /// </summary>
+        /// <param name="model">The whole <c>.onnx</c> file.</param>
+        /// <param name="source">The file's path or name, for messages.</param>
+        /// <exception cref="ModelContractException">The bytes are not a well-formed ONNX model.</exception>
+        public static IReadOnlyList<string> ReadOperators(ReadOnlySpan<byte> model, string source)
+        {
+            source ??= "<model>";
+            var operators = new SortedSet<string>(StringComparer.Ordinal);
+            var reader = new WireReader(model, source);
+            while (!reader.AtEnd)
+            {
+                (int field, int wire) = reader.Tag();
+                // Two graph fields merge (protobuf's rule for a repeated message field): the nodes of both count.
+                if (field == GraphField && wire == WireLengthDelimited) ReadGraphOperators(reader.Bytes(), source, operators);
+                else reader.Skip(field, wire);
+            }
+
+            return new List<string>(operators);
+        }
+
+        private static void ReadGraphOperators(ReadOnlySpan<byte> graph, string source, SortedSet<string> into)
+        {
+            var reader = new WireReader(graph, source);
+            while (!reader.AtEnd)
+            {
+                (int field, int wire) = reader.Tag();
+                if (field != GraphNodeField || wire != WireLengthDelimited)
+                {
+                    reader.Skip(field, wire);
+                    continue;
+                }
+
+                var node = new WireReader(reader.Bytes(), source);
+                string opType = "", domain = "";
+                while (!node.AtEnd)
+                {
+                    (int f, int w) = node.Tag();
+                    if (f == NodeOpTypeField && w == WireLengthDelimited) opType = node.String();
+                    else if (f == NodeDomainField && w == WireLengthDelimited) domain = node.String();
+                    else node.Skip(f, w);
+                }
+
+                into.Add(domain.Length == 0 || domain == "ai.onnx" ? opType : domain + "::" + opType);
+            }
         }
 
         private static void ReadEntry(ReadOnlySpan<byte> entry, string source, Dictionary<string, string> metadata)
@@ -167,7 +221,7 @@ namespace DeltaInterpolator.Core.Inference
                 }
                 catch (ArgumentException)
                 {
-                    throw Malformed($"the metadata string at byte {at} is not valid UTF-8", "UTF-8 text, as ONNX stores strings");
+                    throw Malformed($"the string at byte {at} is not valid UTF-8", "UTF-8 text, as ONNX stores strings");
                 }
             }
 

@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Core.Inference
     /// → quaternion, put in the baseline quaternion's hemisphere so that a track never flips sign.
     /// Allocation-free.
     /// </summary>
-    internal static class OutputDecoder
+    public static class OutputDecoder
     {
         /// <summary>Decodes one joint's rotation.</summary>
         /// <param name="mode">Output Δ-mode (<see cref="OutputDeltaMode.None"/>: the 6D baseline is zero).</param>

@@ -14,9 +14,19 @@ namespace DeltaInterpolator.Core.Inference
         /// <param name="rootPositionDelta">The root position delta (3 values).</param>
         /// <param name="rotation6DDelta">The 6D rotation deltas (J × 6 values).</param>
         public OutputRow(ReadOnlySpan<float> rootPositionDelta, ReadOnlySpan<float> rotation6DDelta)
+            : this(rootPositionDelta, rotation6DDelta, default)
+        {
+        }
+
+        /// <summary>A row from its deltas and its predicted foot contacts (contract version 3; empty when the model has none).</summary>
+        /// <param name="rootPositionDelta">The root position delta (3 values).</param>
+        /// <param name="rotation6DDelta">The 6D rotation deltas (J × 6 values).</param>
+        /// <param name="footContacts">The 4 contact probabilities (<see cref="ModelContract.ContactJoints"/>), or empty.</param>
+        public OutputRow(ReadOnlySpan<float> rootPositionDelta, ReadOnlySpan<float> rotation6DDelta, ReadOnlySpan<float> footContacts)
         {
             RootPositionDelta = rootPositionDelta;
             Rotation6DDelta = rotation6DDelta;
+            FootContacts = footContacts;
         }
 
         /// <summary>The root position delta (3 values, model units, localized).</summary>
@@ -25,13 +35,18 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>The 6D rotation deltas (J × 6 values, the contract's 6D convention).</summary>
         public ReadOnlySpan<float> Rotation6DDelta { get; }
 
+        /// <summary>The predicted probability that each foot joint is planted (4 values, <c>foot_contacts</c>), or empty when the model has no contact output.</summary>
+        public ReadOnlySpan<float> FootContacts { get; }
+
         /// <summary>Row <paramref name="row"/> of a run's outputs (<c>root_position_delta</c>, <c>rotation_6d_delta</c>) for <paramref name="joints"/> joints.</summary>
         internal static OutputRow Of(GraphTensors outputs, int row, int joints)
         {
             float[] root = outputs.RootPositionDelta!.Floats!;
             float[] rotation = outputs.Rotation6DDelta!.Floats!;
-            int width = 6 * joints;
-            return new OutputRow(new ReadOnlySpan<float>(root, 3 * row, 3), new ReadOnlySpan<float>(rotation, row * width, width));
+            int width = 6 * joints, c = ModelContract.ContactChannelCount;
+            float[]? contacts = outputs.FootContacts?.Floats;
+            return new OutputRow(new ReadOnlySpan<float>(root, 3 * row, 3), new ReadOnlySpan<float>(rotation, row * width, width),
+                contacts == null ? default : new ReadOnlySpan<float>(contacts, c * row, c));
         }
     }
 }

@@ -52,7 +52,8 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>
         /// Decodes <paramref name="row"/> into missing frame <paramref name="k"/> (0..n−1) of <paramref name="transition"/>,
-        /// world space, into <paramref name="roots"/> (n × 3) and <paramref name="rotations"/> (n × J × 4) at k.
+        /// world space, into <paramref name="roots"/> (n × 3) and <paramref name="rotations"/> (n × J × 4) at k, and its
+        /// predicted foot contacts, when the model gives them, into the transition's <see cref="Transition.FootContacts"/> at k.
         /// </summary>
         public void Decode(Transition transition, LocalizedKeys keys, OutputRow row, int k, double[] roots, double[] rotations)
         {
@@ -74,6 +75,11 @@ namespace DeltaInterpolator.Core.Inference
                 if (j == 0) q = loc.UnlocalizeRootRotation(q);
                 q.Write(rotations, (k * jc + j) * 4);
             }
+
+            // The row's predicted contacts go to the request (every decode path comes here): lockers plant feet by them.
+            transition.HasFootContacts = !row.FootContacts.IsEmpty;
+            transition.ContactThreshold = Contract.ContactThreshold;
+            if (transition.HasFootContacts) row.FootContacts.CopyTo(new Span<float>(transition.FootContacts, Transition.ContactChannels * k, Transition.ContactChannels));
         }
 
         /// <summary>

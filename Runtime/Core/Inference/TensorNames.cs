@@ -31,6 +31,12 @@ namespace DeltaInterpolator.Core.Inference
         /// <summary>Output, float32 [1, N, J, 6]: Δ of every joint's local 6D rotation (rows).</summary>
         public const string Rotation6DDelta = "rotation_6d_delta";
 
+        /// <summary>
+        /// Optional output of the whole and frame graphs (contract version 3), float32 [B, N, 4]: per query frame the
+        /// probability that each foot joint of <see cref="ModelContract.ContactJoints"/> is planted.
+        /// </summary>
+        public const string FootContacts = "foot_contacts";
+
         /// <summary>Constant output, int64 [1]: the contract version the graph was exported with.</summary>
         public const string ContractVersion = "contract_version";
 

@@ -6,7 +6,7 @@ using System.Text;
 namespace DeltaInterpolator.Core.Json
 {
     /// <summary>The kind of a <see cref="JsonValue"/>.</summary>
-    internal enum JsonKind
+    public enum JsonKind
     {
         /// <summary>null</summary>
         Null,
@@ -28,7 +28,7 @@ namespace DeltaInterpolator.Core.Json
     /// Unity). Every value remembers its source and line so that a wrong shape is reported as
     /// <c>FILE:LINE: what was wrong; what was expected</c> (<see cref="DataFormatException"/>).
     /// </summary>
-    internal sealed class JsonValue
+    public sealed class JsonValue
     {
         private readonly object? _value;
 

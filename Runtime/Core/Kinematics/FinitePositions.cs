@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Core.Kinematics
     /// numbers. Values near 1e308 are finite in a file yet overflow once offsets are added or errors are
     /// squared, which gave NaN scores, NaN frames and crashed previews.
     /// </summary>
-    internal static class FinitePositions
+    public static class FinitePositions
     {
         /// <summary>
         /// Refuses, with <see cref="DataFormatException"/> naming <paramref name="source"/> and the first bad

@@ -10,7 +10,7 @@ namespace DeltaInterpolator.Core.Kinematics
     /// as the official <c>quat_fk</c>; no renormalisation, so unit input gives unit output up to rounding.
     /// Allocation-free: callers pass flat spans.
     /// </summary>
-    internal static class ForwardKinematics
+    public static class ForwardKinematics
     {
         /// <summary>
         /// FK of frames whose non-root joints sit at the skeleton's rest offsets (how the benchmark and

@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Core.Kinematics
     /// character faces a target axis at one frame. Both act on the root only: the root is the one
     /// joint whose local transform is global.
     /// </summary>
-    internal static class WindowNormalization
+    public static class WindowNormalization
     {
         /// <summary>
         /// Subtracts the mean root X and Z over all <paramref name="frameCount"/> frames from every frame;

@@ -39,7 +39,9 @@ namespace DeltaInterpolator.Core.Playback
         private readonly IPoseConverter _map;
         private readonly TransitionScheduler _scheduler;
         private readonly PlaybackSettings _settings;
-        private readonly List<TransitionRequest> _requests = new List<TransitionRequest>();
+        // A finished request is free for the next of its shape (the playing one is skipped); non-capturing, so a search allocates nothing.
+        private static readonly Func<TransitionRequest, bool> IsFinished = r => r.Finished;
+        private readonly ShapeCache<TransitionRequest> _requests = new ShapeCache<TransitionRequest>();
         private readonly int _joints;
         private readonly double[] _pastRoots;
         private readonly double[] _pastRotations;
@@ -50,7 +52,7 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _shownRoot = new double[3];
         private readonly double[] _shownRotations;
         private readonly EaseIn _ease;
-        private readonly LiveFootLocker? _feet;
+        private readonly TransitionFeet? _feet;
         private TransitionRequest? _request;
         private int _requestId;
         private int _nextId;
@@ -98,7 +100,7 @@ namespace DeltaInterpolator.Core.Playback
             _targetRotations = new double[b * 4];
             _shownRotations = new double[b * 4];
             _ease = new EaseIn(_joints);
-            if (FootRig.HasModelLegs(c.Skeleton)) _feet = new LiveFootLocker(FootRig.ForModel(c.Skeleton));
+            _feet = TransitionFeet.For(map, c.Skeleton);
         }
 
         /// <summary>Reports every request exactly once: when its target pose is shown, or when it is interrupted or cancelled.</summary>
@@ -153,7 +155,7 @@ namespace DeltaInterpolator.Core.Playback
         internal TransitionRequest? CurrentRequest => _request;
 
         /// <summary>The foot locker of this character's transitions (null when the model's skeleton lacks leg joints), for tests and tools.</summary>
-        internal LiveFootLocker? Feet => _feet;
+        internal LiveFootLocker? Feet => _feet?.Locker;
 
         /// <summary>Missing frames of the current request decoded so far.</summary>
         public int DecodedFrames => _request?.Decoded ?? 0;
@@ -304,8 +306,7 @@ namespace DeltaInterpolator.Core.Playback
             _ease.Begin(t);
             if (_settings.LockFeet && _feet != null)
             {
-                _feet.Begin(new ReadOnlySpan<double>(t.KeyRootPositions, 3 * (PastFrames - 1), 3), new ReadOnlySpan<double>(t.KeyLocalRotations, jr * (PastFrames - 1), jr),
-                    new ReadOnlySpan<double>(t.KeyRootPositions, 3 * PastFrames, 3), new ReadOnlySpan<double>(t.KeyLocalRotations, jr * PastFrames, jr), t0, t0 + durationSeconds);
+                _feet.Begin(t, PastFrames - 1, PastFrames, t0, t0 + durationSeconds);
             }
 
             _neededBefore = 0;
@@ -404,7 +405,7 @@ namespace DeltaInterpolator.Core.Playback
                 {
                     _reached = true;
                     _reachedAt = time;
-                    _feet?.End();
+                    _feet?.Locker.End();
                     _targetRoot.CopyTo(_poseRoot, 0);
                     _targetRotations.CopyTo(_poseRotations, 0);
                     _pendingCompletion = new TransitionCompletion(_requestId, true, time);
@@ -440,8 +441,8 @@ namespace DeltaInterpolator.Core.Playback
 
             if (_ease.Show(request, a, f, decoded >= need)) HeldFrames++;
             // Feet after the SLERP → network ease-in, on the pose about to be shown (model space).
-            _feet?.LockPose(time, _ease.Root, _ease.Rotations);
-            _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
+            if (_feet != null) _feet.LockAndShow(time, _ease.Root, _ease.Rotations, request.ContactsOf(a + (f < 0.5 ? 0 : 1)), request.Transition.ContactThreshold, _poseRoot, _poseRotations);
+            else _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
             double blendIn = Math.Min(_settings.BlendInSeconds, _duration);
             double w = blendIn > 0 ? SmoothStep(Math.Max(0, s) / blendIn) : 1;
             _weight = _startWeight + (1 - _startWeight) * w;
@@ -449,7 +450,7 @@ namespace DeltaInterpolator.Core.Playback
 
         private void Interrupt(double time)
         {
-            _feet?.End();
+            _feet?.Locker.End();
             if (_request != null) _request.Cancel();
             if (_playing && !_reached) _pendingInterruption = new TransitionCompletion(_requestId, false, time);
             _playing = false;
@@ -480,14 +481,8 @@ namespace DeltaInterpolator.Core.Playback
 
         private TransitionRequest RequestFor(int past, int missing)
         {
-            foreach (TransitionRequest j in _requests)
-            {
-                if (j != _request && j.Finished && j.Transition.PastFrames == past && j.Transition.MissingFrames == missing) return j;
-            }
-
-            var request = new TransitionRequest(new Transition(_scheduler.Contract.Skeleton, past, missing), _scheduler.Contract);
-            _requests.Add(request);
-            return request;
+            return _requests.Find(past, missing, _request, IsFinished)
+                ?? _requests.Add(past, missing, new TransitionRequest(new Transition(_scheduler.Contract.Skeleton, past, missing), _scheduler.Contract));
         }
 
         private static double SmoothStep(double x)

@@ -6,7 +6,7 @@ namespace DeltaInterpolator.Core.Rotations
     /// A double-precision 3×3 matrix, row-major: <c>M01</c> is row 0, column 1. Rotation matrices act on
     /// column vectors (v' = M v), matching <see cref="Quaternions.Apply"/>.
     /// </summary>
-    internal readonly struct Matrix3x3D
+    public readonly struct Matrix3x3D
     {
         /// <summary>Row 0.</summary>
         public readonly double M00, M01, M02;

@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Core.Rotations
     /// Formulas follow the official LaFAN1 benchmark code where it defines one, so that baselines and
     /// metrics computed here agree with it.
     /// </summary>
-    internal static class Quaternions
+    public static class Quaternions
     {
         /// <summary>Hamilton product a ⊗ b: the rotation b followed by a (for column vectors).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

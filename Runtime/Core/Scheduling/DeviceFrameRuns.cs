@@ -105,11 +105,11 @@ namespace DeltaInterpolator.Core.Scheduling
             int rows = run.Rows;
             GraphTensors tensors = run.Frame;
             long[] query = tensors.QueryFrameIndices!.Longs!;
-            long[] gap = tensors.GapLength.Longs!;
+            long[] missing = tensors.GapLength.Longs!;   // n per row (the contract's gap_length input)
             int past = tensors.PastFrames;
             for (int r = 0; r < rows; r++)
             {
-                int n = (int)gap[r];
+                int n = (int)missing[r];
                 // A row that no longer plays asks for its last frame again (computed, not used).
                 int from = run.Live(r) ? run.Requests[r]!.Decoded : -1;
                 run.FrameIndex[r] = from;

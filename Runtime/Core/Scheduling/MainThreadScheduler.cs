@@ -18,7 +18,7 @@ namespace DeltaInterpolator.Core.Scheduling
         private int _tokensPerFrame = 512;
         private int _framesPerRequest = 1;
 
-        /// <summary>Creates the decoder; it owns <paramref name="inbetweener"/>.</summary>
+        /// <summary>Creates the scheduler; it owns <paramref name="inbetweener"/>.</summary>
         /// <param name="inbetweener">The model.</param>
         /// <param name="maxBatch">Most transitions per run (1: one run per request and frame, unbatched).</param>
         /// <param name="framesPerRun">Missing frames each transition decodes per run (default 4: a run whose results arrive a few
@@ -47,7 +47,7 @@ namespace DeltaInterpolator.Core.Scheduling
             set => _framesPerRequest = value >= 1 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "expected at least 1");
         }
 
-        /// <summary>Tokens the last <see cref="Pump"/> scheduled.</summary>
+        /// <summary>Tokens the last <see cref="Pump()"/> scheduled.</summary>
         public int LastFrameTokens { get; private set; }
 
         internal BatchPump Batches => _pump;
@@ -58,6 +58,19 @@ namespace DeltaInterpolator.Core.Scheduling
             get => _pump.Timer;
             set => _pump.Timer = value;
         }
+
+        /// <summary>
+        /// Stopwatch ticks spent in pumps so far (gathering inputs, running graphs, scattering results): the
+        /// decoder's own work, which the crowd benchmark reports per rendered frame.
+        /// </summary>
+        public long PumpTicks => _pump.PumpTicks;
+
+        /// <summary>
+        /// Collects finished runs and schedules new ones within <paramref name="tokenBudget"/> tokens (one frame per
+        /// run), instead of <see cref="TokensPerFrame"/>: a benchmark drains every request at once with
+        /// <see cref="int.MaxValue"/>. Returns the tokens scheduled.
+        /// </summary>
+        public int Pump(int tokenBudget) => _pump.Pump(tokenBudget);
 
         /// <inheritdoc />
         public override void Dispose()

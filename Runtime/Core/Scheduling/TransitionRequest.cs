@@ -48,7 +48,7 @@ namespace DeltaInterpolator.Core.Scheduling
         /// <summary>The request's key encoding (R × 2 × K × D), written by the scheduler's keys run; null until the first one.</summary>
         public float[]? KeyMemory { get; set; }
 
-        /// <summary>Order of the request among all of its decoder's (older first).</summary>
+        /// <summary>Order of the request among all of its scheduler's (older first).</summary>
         public long Sequence { get; set; }
 
         /// <summary>Bumped at every <see cref="Reset"/>: tells a batch row filled for an earlier request of this request from this one.</summary>
@@ -70,7 +70,7 @@ namespace DeltaInterpolator.Core.Scheduling
             set => Volatile.Write(ref _needed, value);
         }
 
-        /// <summary>True when no decoder touches the request any more (it may be reused).</summary>
+        /// <summary>True when no scheduler touches the request any more (it may be reused).</summary>
         public bool Finished => Volatile.Read(ref _finished) != 0;
 
         /// <summary>True when the player no longer wants the frames.</summary>
@@ -92,6 +92,18 @@ namespace DeltaInterpolator.Core.Scheduling
         }
 
         public void Publish(int decoded) => Volatile.Write(ref _decoded, decoded);
+
+        /// <summary>
+        /// The model's predicted contacts (4 probabilities, <see cref="Transition.ContactThreshold"/>) of the transition's
+        /// frame <paramref name="frame"/> (0 the last past key, 1..n the missing frames, n + 1 the target), once it is
+        /// decoded; empty for keys, frames not decoded yet and models without contacts (the locker labels them then).
+        /// </summary>
+        public ReadOnlySpan<float> ContactsOf(int frame)
+        {
+            int k = frame - 1;
+            if (!Transition.HasFootContacts || k < 0 || k >= Transition.MissingFrames || Decoded <= k) return default;
+            return new ReadOnlySpan<float>(Transition.FootContacts, Transition.ContactChannels * k, Transition.ContactChannels);
+        }
 
         public void Finish() => Volatile.Write(ref _finished, 1);
 

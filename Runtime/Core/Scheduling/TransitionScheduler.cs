@@ -7,7 +7,7 @@ namespace DeltaInterpolator.Core.Scheduling
     /// <summary>
     /// Where a <see cref="Playback.TransitionPlayer"/>'s network work runs: <see cref="WorkerThreadScheduler"/> (a
     /// background thread; the main thread never waits) or <see cref="MainThreadScheduler"/> (on the main
-    /// thread, a bounded amount of work per rendered frame, for engines that must run there). One decoder
+    /// thread, a bounded amount of work per rendered frame, for engines that must run there). One scheduler
     /// serves any number of players of the same model and runs all of their pending work in batches
     /// (one run per graph and number of past keys per round).
     /// </summary>

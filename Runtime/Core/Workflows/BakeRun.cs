@@ -7,8 +7,9 @@ namespace DeltaInterpolator.Core.Workflows
     /// <summary>The result of <see cref="InbetweenBake.Run"/>: the seam, the keys on both timelines and one <see cref="MethodBake"/> per method, in order.</summary>
     public sealed class BakeRun
     {
-        internal BakeRun(IRigRetargeting rig, MotionClip groundTruthOnModel, int[] rigKeys, int[] modelKeys, MethodBake[] methods)
+        internal BakeRun(IRigRetargeting rig, MotionClip groundTruthOnModel, int[] rigKeys, int[] modelKeys, MethodBake[] methods, string[]? warnings = null)
         {
+            Warnings = warnings ?? Array.Empty<string>();
             Rig = rig;
             GroundTruthOnModel = groundTruthOnModel;
             RigKeys = rigKeys;
@@ -30,6 +31,12 @@ namespace DeltaInterpolator.Core.Workflows
 
         /// <summary>One result per method, in the order they were given.</summary>
         public IReadOnlyList<MethodBake> Methods { get; }
+
+        /// <summary>
+        /// What the run did not do as asked, one line each (e.g. foot locking skipped on a rig whose legs cannot be
+        /// bent); empty when everything was done. Front ends show them as warnings.
+        /// </summary>
+        public IReadOnlyList<string> Warnings { get; }
 
         /// <summary>The result of the method called <paramref name="name"/>.</summary>
         /// <exception cref="ArgumentException">No method of that name was baked.</exception>

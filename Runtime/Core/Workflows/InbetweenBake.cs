@@ -48,13 +48,18 @@ namespace DeltaInterpolator.Core.Workflows
             var rigLockers = new FootLocker?[methods.Count];
             var modelLockers = new FootLocker?[methods.Count];
             SkeletonMap? map = rig.Map;
+            var warnings = new List<string>();
             int total = 0;
             for (int i = 0; i < methods.Count; i++)
             {
                 BakeSettings settings = methods[i].Settings;
                 if (map != null && settings.FootLocking != null)
                 {
-                    rigLockers[i] = FootLocker.ForBake(() => FootRig.ForSource(map), settings.FootLocking, "the rig");
+                    // A rig whose legs cannot be bent (a knee the map synthesizes, a leg that is no chain) is baked
+                    // unlocked with one warning: the bake itself does not need its feet held.
+                    FootRig? legs = FootRig.TryForSource(map, out string? problem);
+                    if (legs != null) rigLockers[i] = FootLocker.ForBake(() => legs, settings.FootLocking, "the rig");
+                    else if (warnings.Count == 0) warnings.Add($"foot locking skipped on the rig: {problem}; its filled frames keep the feet as each method placed them");
                     modelLockers[i] = FootLocker.ForBake(() => FootRig.ForModel(onModel.Skeleton), settings.FootLocking, "the model's skeleton");
                     settings = settings.WithFootLocking(null);
                 }
@@ -65,6 +70,7 @@ namespace DeltaInterpolator.Core.Workflows
             }
 
             var results = new MethodBake[methods.Count];
+            var rigContacts = new FootContacts();
             int done = 0;
             for (int i = 0; i < methods.Count; i++)
             {
@@ -74,12 +80,19 @@ namespace DeltaInterpolator.Core.Workflows
                 double seconds = clock.Elapsed.TotalSeconds;
                 done += plans[i].Gaps.Count;
                 MotionClip onRig = rig.FromModel(baked, rigClip, rigKeys);
-                rigLockers[i]?.Lock(onRig, Relative(rigKeys));
-                modelLockers[i]?.Lock(baked, Relative(modelKeys));
-                results[i] = new MethodBake(methods[i], plans[i], baked, onRig, seconds);
+                if (rigLockers[i] != null)
+                {
+                    // The model's predicted contacts, on the rig's frames (nearest in time; the rig may run at another rate).
+                    double start = rigKeys[0] * rigClip.FrameTime - modelKeys[0] * baked.FrameTime;
+                    bakers[i].Contacts.ResampleInto(rigContacts, onRig.FrameCount, onRig.FrameTime, baked.FrameTime, start);
+                    rigLockers[i]!.Lock(onRig, Relative(rigKeys), rigContacts);
+                }
+
+                modelLockers[i]?.Lock(baked, Relative(modelKeys), bakers[i].Contacts);
+                results[i] = new MethodBake(methods[i], plans[i], baked, onRig, seconds, bakers[i].Contacts);
             }
 
-            return new BakeRun(rig, onModel, (int[])rigKeys.Clone(), modelKeys, results);
+            return new BakeRun(rig, onModel, (int[])rigKeys.Clone(), modelKeys, results, warnings.ToArray());
         }
 
         /// <summary>Key frames relative to the first (the baked clips span the first to the last key).</summary>

@@ -39,8 +39,8 @@ namespace DeltaInterpolator.Evaluation.Benchmark
         /// <summary>The number of context frames actually given: <see cref="FedPastFrames"/>, or <see cref="PastFrames"/> when 0.</summary>
         public int EffectivePastFrames => FedPastFrames == 0 ? PastFrames : FedPastFrames;
 
-        /// <summary>Past keys per transition: <see cref="PastContext.KeyCount"/> of the fed frames under <see cref="ShortContext"/>.</summary>
-        public int KeyPastFrames => PastContext.KeyCount(EffectivePastFrames, PastFrames, ShortContext);
+        /// <summary>Past keys per transition: <see cref="PastContext.PastFrames"/> of the fed frames under <see cref="ShortContext"/>.</summary>
+        public int TransitionPastFrames => PastContext.PastFrames(EffectivePastFrames, PastFrames, ShortContext);
 
         /// <summary>Transition lengths n to evaluate (official: 5, 15, 30, 45).</summary>
         public IReadOnlyList<int> Lengths { get; set; } = new[] { 5, 15, 30, 45 };

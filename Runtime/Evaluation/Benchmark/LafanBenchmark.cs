@@ -70,7 +70,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             int window = options.Window;
             int past = options.PastFrames;
             int fed = options.EffectivePastFrames;
-            int keyPast = options.KeyPastFrames;
+            int keyPast = options.TransitionPastFrames;
             IReadOnlyList<int> lengths = options.Lengths;
             int totalWindows = CountWindows(testClips, options);
             if (totalWindows == 0) throw new ArgumentException($"the test files are shorter than one window of {window} frames");

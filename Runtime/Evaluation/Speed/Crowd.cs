@@ -24,11 +24,11 @@ namespace DeltaInterpolator.Evaluation.Speed
         private int _round;
         private readonly TransitionScheduler _scheduler;
 
-        /// <summary>Creates <paramref name="characters"/> players on <paramref name="decoder"/> (a quarter with 4 past keys).</summary>
-        public Crowd(TransitionScheduler decoder, int characters)
+        /// <summary>Creates <paramref name="characters"/> players on <paramref name="scheduler"/> (a quarter with 4 past keys).</summary>
+        public Crowd(TransitionScheduler scheduler, int characters)
         {
-            _scheduler = decoder;
-            ModelContract c = decoder.Contract;
+            _scheduler = scheduler;
+            ModelContract c = scheduler.Contract;
             var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
             _bones = c.JointCount;
             _roots = new double[characters][];
@@ -37,7 +37,7 @@ namespace DeltaInterpolator.Evaluation.Speed
             {
                 // A quarter of the crowd asks with 4 past keys, the rest with the model's own context.
                 var settings = new PlaybackSettings { BlendInSeconds = 0.1, PastFrames = i % 4 == 3 ? Math.Min(4, c.TrainingPastFrames.Max) : 0 };
-                Players.Add(new TransitionPlayer(map, decoder, settings));
+                Players.Add(new TransitionPlayer(map, scheduler, settings));
                 _roots[i] = new double[3];
                 _rotations[i] = new double[4 * _bones];
             }

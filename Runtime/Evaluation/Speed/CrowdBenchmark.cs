@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Evaluation.Speed
     /// keys and the rest with 10) in the same rendered frame at 60 fps. Measures the main thread's cost of the
     /// N requests, the wall time until every character has its first and then all of its network frames when
     /// decoding runs as fast as it can (batched), the inference cost per rendered frame while all play
-    /// (the decoder's own work, batched vs one run per character, measured side by side with their frames
+    /// (the scheduler's own work, batched vs one run per character, measured side by side with their frames
     /// interleaved over three rounds of requests, simulated clock, one frame decoded per character per
     /// rendered frame; the whole step with every player's playback beside it), and, on a real 60 fps clock
     /// with the worker thread, how many rendered frames held a pose and
@@ -22,12 +22,12 @@ namespace DeltaInterpolator.Evaluation.Speed
     {
         /// <summary>
         /// The largest crowd the benchmark builds (4 × the largest measured crowd): each character
-        /// holds its poses, history and decoder buffers, and 100,000 ran out of memory.
+        /// holds its poses, history and request buffers, and 100,000 ran out of memory.
         /// </summary>
         public const int MaxCharacters = 1024;
 
         /// <summary>Runs the benchmark; takes seconds.</summary>
-        /// <param name="loadLazyModel">Loads a fresh model with its lazy graphs (each decoder owns and disposes one).</param>
+        /// <param name="loadLazyModel">Loads a fresh model with its lazy graphs (each scheduler owns and disposes one).</param>
         /// <param name="characters">1 to <see cref="MaxCharacters"/>.</param>
         public static CrowdTimings Run(Func<Inbetweener> loadLazyModel, int characters)
         {
@@ -75,15 +75,15 @@ namespace DeltaInterpolator.Evaluation.Speed
             }
 
             // 2. As fast as it can: first frames and all frames of every character (batched).
-            using (var decoder = new MainThreadScheduler(loadLazyModel(), framesPerRun: 1))
+            using (var scheduler = new MainThreadScheduler(loadLazyModel(), framesPerRun: 1))
             {
-                var crowd = new Crowd(decoder, characters);
+                var crowd = new Crowd(scheduler, characters);
                 crowd.Warm();
                 crowd.RequestAll();
-                while (!crowd.AllDecoded) decoder.Batches.Pump(int.MaxValue);
+                while (!crowd.AllDecoded) scheduler.Pump(int.MaxValue);
                 crowd.PlayFor(1.3);
                 // The main thread's cost of the N requests (keys copied, localized, features and SLERP frames;
-                // no network: that runs on the decoder), measured here where no worker thread shares the core.
+                // no network: that runs on the scheduler), measured here where no worker thread shares the core.
                 long r0 = Stopwatch.GetTimestamp();
                 crowd.RequestAll();
                 result.RequestMainThreadMs = Math.Round(Ms(r0), 4);
@@ -91,7 +91,7 @@ namespace DeltaInterpolator.Evaluation.Speed
                 double first = -1;
                 while (true)
                 {
-                    decoder.Batches.Pump(int.MaxValue);
+                    scheduler.Pump(int.MaxValue);
                     bool all = true, any = true;
                     foreach (TransitionPlayer p in crowd.Players)
                     {
@@ -120,7 +120,7 @@ namespace DeltaInterpolator.Evaluation.Speed
         /// <summary>Rounds of requests whose frames are timed: one second of rendered frames each.</summary>
         private const int FrameCostRounds = 3;
 
-        // Per rendered frame while all play: the decoder's work (its pumps: gather, run, scatter) and the whole step
+        // Per rendered frame while all play: the scheduler's work (its pumps: gather, run, scatter) and the whole step
         // (that and every player's playback, which batching does not change). Two identical crowds, one decoding every
         // character's work in one run per graph and shape, the other one run per character, stepped in turn frame by
         // frame over FrameCostRounds rounds of simultaneous requests.
@@ -129,7 +129,7 @@ namespace DeltaInterpolator.Evaluation.Speed
             using var batched = new MainThreadScheduler(loadLazyModel(), 256, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
             using var unbatched = new MainThreadScheduler(loadLazyModel(), 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
             var crowds = new[] { new Crowd(batched, characters), new Crowd(unbatched, characters) };
-            var decoders = new[] { batched, unbatched };
+            var schedulers = new[] { batched, unbatched };
             foreach (Crowd crowd in crowds)
             {
                 crowd.Warm();
@@ -149,11 +149,11 @@ namespace DeltaInterpolator.Evaluation.Speed
                 {
                     for (int k = 0; k < 2; k++)
                     {
-                        long p0 = decoders[k].Batches.PumpTicks;
+                        long p0 = schedulers[k].PumpTicks;
                         long t0 = Stopwatch.GetTimestamp();
                         crowds[k].Step();
                         steps[k] += Ms(t0);
-                        pumped[k] += decoders[k].Batches.PumpTicks - p0;
+                        pumped[k] += schedulers[k].PumpTicks - p0;
                     }
 
                     frames++;

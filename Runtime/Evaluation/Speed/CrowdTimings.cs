@@ -21,7 +21,7 @@ namespace DeltaInterpolator.Evaluation.Speed
         /// <summary>Wall time until every character has all of its model frames (ms, 3 decimals).</summary>
         public double AllFramesMs { get; internal set; }
 
-        /// <summary>Inference per rendered frame while all play, batched: the decoder's gathering, graph runs and scattering (ms, 4 decimals).</summary>
+        /// <summary>Inference per rendered frame while all play, batched: the scheduler's gathering, graph runs and scattering (ms, 4 decimals).</summary>
         public double FrameMsBatched { get; internal set; }
 
         /// <summary>Inference per rendered frame while all play, one run per character (ms, 4 decimals).</summary>

@@ -33,11 +33,11 @@ namespace DeltaInterpolator.Tests.Inference
         [Test]
         public void VersionOutsideTheSupportedRangeIsOneErrorWithARemedy()
         {
-            ModelCheckReport r = CheckModel(ModelContractTests.Whole(ModelContractTests.MetadataJson(version: 3), versionText: "3"));
+            ModelCheckReport r = CheckModel(ModelContractTests.Whole(ModelContractTests.MetadataJson(version: 4), versionText: "4"));
             Assert.That(r.CountOf(CheckSeverity.Error), Is.EqualTo(1), "the string and the JSON say the same: one result");
             ModelCheck e = r.FirstError!;
-            Assert.That(e.Message, Is.EqualTo("the model has contract version 3"));
-            Assert.That(e.Remedy, Is.EqualTo("expected a version from 1 to 2; update the package, or export the model with a trainer of the matching version"));
+            Assert.That(e.Message, Is.EqualTo("the model has contract version 4"));
+            Assert.That(e.Remedy, Is.EqualTo("expected a version from 1 to 3; update the package, or export the model with a trainer of the matching version"));
             Assert.That(e.Source, Is.EqualTo("Models/test.onnx"));
 
             r = CheckModel(ModelContractTests.Whole(ModelContractTests.MetadataJson(version: 0), versionText: "0"));

@@ -61,8 +61,8 @@ namespace DeltaInterpolator.Tests.Inference
         [Test]
         public void NewerVersionIsRefusedWithWhatToDo()
         {
-            string m = Refuse(Whole(MetadataJson(version: 3), versionText: "3"));
-            Assert.That(m, Is.EqualTo(Source + ": the model has contract version 3; expected a version from 1 to 2; update the package, or export the model with a trainer of the matching version"));
+            string m = Refuse(Whole(MetadataJson(version: 4), versionText: "4"));
+            Assert.That(m, Is.EqualTo(Source + ": the model has contract version 4; expected a version from 1 to 3; update the package, or export the model with a trainer of the matching version"));
         }
 
         [Test]

@@ -16,8 +16,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
             GoldenCase c = Fixtures.Golden[2];
             Transition t = c.ToTransition(model.Contract.Skeleton);
-            var global = new double[c.Gap * model.Contract.JointCount * 3];
-            LazyInbetweener lazy = model.CreateLazy(c.PastFrames, c.Gap);
+            var global = new double[c.MissingFrames * model.Contract.JointCount * 3];
+            LazyInbetweener lazy = model.CreateLazy(c.PastFrames, c.MissingFrames);
             for (int i = 0; i < 3; i++)
             {
                 model.Inbetween(t, global);
@@ -34,11 +34,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             for (int i = 0; i < calls; i++)
             {
                 lazy.Begin(t);
-                lazy.DecodeFrame(i % c.Gap);
+                lazy.DecodeFrame(i % c.MissingFrames);
             }
 
             long lazyBytes = GC.GetAllocatedBytesForCurrentThread() - before;
-            TestContext.Out.WriteLine($"{calls} whole transitions (n = {c.Gap}): {whole} bytes; {calls} lazy begin + frame: {lazyBytes} bytes");
+            TestContext.Out.WriteLine($"{calls} whole transitions (n = {c.MissingFrames}): {whole} bytes; {calls} lazy begin + frame: {lazyBytes} bytes");
             Assert.That(whole, Is.EqualTo(0), "bytes allocated by whole transitions");
             Assert.That(lazyBytes, Is.EqualTo(0), "bytes allocated by lazy decoding");
         }

@@ -12,7 +12,7 @@ using NUnit.Framework;
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
-    /// Many characters on one decoder in a simulated 60 fps frame loop: batched runs equal one run per
+    /// Many characters on one scheduler in a simulated 60 fps frame loop: batched runs equal one run per
     /// character (real ONNX Runtime, tiny model, contract version 2 and the version 1 file), a frame whose
     /// network output is late shows the request's SLERP pose and the correction eases in without a hold or
     /// a pop (a stand-in backend with a known latency), a burst of requests is spread over frames by the
@@ -29,7 +29,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using var batched = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 12, seed: 1);
             using var single = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true), maxBatch: 1), 12, seed: 1);
             using var v1 = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(V1Model, requireLazy: true)), 12, seed: 1);
-            Assert.That(v1.Decoder.Contract.ContractVersion, Is.EqualTo(1));
+            Assert.That(v1.Scheduler.Contract.ContractVersion, Is.EqualTo(1));
             foreach (Crowd c in new[] { batched, single, v1 })
             {
                 c.PlayUntil(0.5);
@@ -37,8 +37,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 c.PlayUntil(1.3);
             }
 
-            var b = (MainThreadScheduler)batched.Decoder;
-            var s = (MainThreadScheduler)single.Decoder;
+            var b = (MainThreadScheduler)batched.Scheduler;
+            var s = (MainThreadScheduler)single.Scheduler;
             Assert.That(b.Batches.Runs, Is.LessThan(s.Batches.Runs / 4), "in far fewer runs");
             for (int i = 0; i < batched.Players.Count; i++)
             {
@@ -136,8 +136,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void ABurstOfRequestsIsSpreadOverFramesWithinTheBudget(bool device)
         {
             Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs, device);
-            var decoder = new MainThreadScheduler(model) { TokensPerFrame = 200 };
-            using var crowd = new Crowd(decoder, 64, seed: 3);
+            var scheduler = new MainThreadScheduler(model) { TokensPerFrame = 200 };
+            using var crowd = new Crowd(scheduler, 64, seed: 3);
             crowd.PlayUntil(0.5);
             crowd.RequestAll();
             int frames = 0, maxTokens = 0;
@@ -147,7 +147,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 crowd.Step();
                 long now = graphs[1].Tokens + graphs[2].Tokens;
                 maxTokens = Math.Max(maxTokens, (int)(now - before));
-                Assert.That(decoder.LastFrameTokens, Is.EqualTo(now - before), "the stand-in ran what the scheduler says it scheduled");
+                Assert.That(scheduler.LastFrameTokens, Is.EqualTo(now - before), "the stand-in ran what the scheduler says it scheduled");
                 before = now;
                 frames++;
             }
@@ -200,9 +200,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             using var host = new Crowd(new MainThreadScheduler(StandInInbetweener(latencyFrames, out StandInBackend[] h)), 12, seed: 6);
             using var device = new Crowd(new MainThreadScheduler(StandInInbetweener(latencyFrames, out StandInBackend[] d, device: true)), 12, seed: 6);
-            BatchPump scheduler = ((MainThreadScheduler)device.Decoder).Batches;
+            BatchPump scheduler = ((MainThreadScheduler)device.Scheduler).Batches;
             Assert.That(scheduler.KeepsKeyMemoryOnDevice, Is.True);
-            Assert.That(((MainThreadScheduler)host.Decoder).Batches.KeepsKeyMemoryOnDevice, Is.False);
+            Assert.That(((MainThreadScheduler)host.Scheduler).Batches.KeepsKeyMemoryOnDevice, Is.False);
             long reads = h[1].KeyMemoryHostReads + d[1].KeyMemoryHostReads, uploads = h[2].KeyMemoryHostUploads + d[2].KeyMemoryHostUploads;
             Assert.That(reads, Is.EqualTo(2), "each model's load-time probe (constant outputs) ran the keys graph once on the host");
             Assert.That(uploads, Is.EqualTo(2), "and the frame graph");
@@ -288,7 +288,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             // as with ONNX Runtime above (the players' own first frame of a transition).
             crowd.RequestAll();
             crowd.Step();
-            BatchPump scheduler = ((MainThreadScheduler)crowd.Decoder).Batches;
+            BatchPump scheduler = ((MainThreadScheduler)crowd.Scheduler).Batches;
             Assert.That(scheduler.DeviceRunsHeld, Is.EqualTo(0), "the keys run is still in flight");
             long before = GC.GetAllocatedBytesForCurrentThread();
             for (int i = 0; i < 40; i++) crowd.Step();
@@ -379,55 +379,51 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             return new Inbetweener(graphs[0], graphs[1], graphs[2]);
         }
 
-        /// <summary>N characters playing their own clips on one decoder, stepped together at 60 fps.</summary>
+        /// <summary>N characters playing their own clips on one scheduler, stepped together at 60 fps.</summary>
         private sealed class Crowd : IDisposable
         {
             private readonly List<SyntheticClip> _clips = new List<SyntheticClip>();
-            private readonly ArrayPoseStream[] _streams;
+            private readonly List<PlayingCharacter> _characters = new List<PlayingCharacter>();
             private readonly int _seed;
 
-            public Crowd(TransitionScheduler decoder, int characters, int seed, PlaybackSettings? settings = null)
+            public Crowd(TransitionScheduler scheduler, int characters, int seed, PlaybackSettings? settings = null)
             {
-                Decoder = decoder;
+                Scheduler = scheduler;
                 _seed = seed;
-                ModelContract c = decoder.Contract;
+                ModelContract c = scheduler.Contract;
                 Map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
-                _streams = new ArrayPoseStream[characters];
                 for (int i = 0; i < characters; i++)
                 {
                     // Past frames mixed the way a game mixes them: most characters with full history, some short.
                     // Feet unlocked: these tests hold shown poses to the request's exact SLERP and network frames
                     // (locking after the ease-in has tests of its own).
                     var s = settings ?? new PlaybackSettings { BlendInSeconds = 0, PastFrames = i % 4 == 3 ? 4 : 0, LockFeet = false };
-                    Players.Add(new TransitionPlayer(Map, decoder, s));
-                    _clips.Add(new SyntheticClip(c.JointCount, seed * 1000 + i));
-                    _streams[i] = new ArrayPoseStream(new double[3], new double[4 * c.JointCount]);
+                    var clip = new SyntheticClip(c.JointCount, seed * 1000 + i);
+                    var character = new PlayingCharacter(Map, scheduler, s, clip.Sample);
+                    _clips.Add(clip);
+                    _characters.Add(character);
+                    Players.Add(character.Player);
                 }
             }
 
-            public TransitionScheduler Decoder { get; }
+            public TransitionScheduler Scheduler { get; }
 
             public NamePoseConverter Map { get; }
 
             public List<TransitionPlayer> Players { get; } = new List<TransitionPlayer>();
 
-            public double Time { get; private set; }
+            /// <summary>The characters' clock (they all step together): the last frame's time.</summary>
+            public double Time => _characters[0].Time;
 
             public double RequestTime { get; private set; }
 
-            private int _frame;
             private int _round;
 
+            /// <summary>One rendered frame: the frame's owner pumps the scheduler once, then every character's frame.</summary>
             public void Step()
             {
-                _frame++;
-                Time = _frame / Fps;
-                Decoder.Pump();
-                for (int i = 0; i < Players.Count; i++)
-                {
-                    _clips[i].Sample(Time, _streams[i].Root, _streams[i].Rotations);
-                    Players[i].Step(Time, ref _streams[i]);
-                }
+                Scheduler.Pump();
+                for (int i = 0; i < _characters.Count; i++) _characters[i].Frame(1 / Fps);
             }
 
             public void PlayUntil(double time)
@@ -446,11 +442,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 {
                     if (which != null && !which(i)) continue;
                     _clips[i].Sample(Time + 3 + i * 0.1 + _round, root, rotations);
-                    Players[i].RequestTransition(root, rotations, 0.4 + 0.1 * ((i + _seed) % 5));
+                    _characters[i].RequestTransition(root, rotations, 0.4 + 0.1 * ((i + _seed) % 5));
                 }
             }
 
-            public void Dispose() => Decoder.Dispose();
+            public void Dispose() => Scheduler.Dispose();
         }
     }
 
@@ -601,7 +597,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     InferenceTensor o = _outputs[i];
                     switch (o.Name)
                     {
-                        case TensorNames.ContractVersion: o.Longs![0] = 2; break;
+                        case TensorNames.ContractVersion: o.Longs![0] = ModelContract.Version; break;
                         case TensorNames.JointCount: o.Longs![0] = 22; break;
                         case TensorNames.KeyFeatureSize: o.Longs![0] = 198; break;
                         case TensorNames.KeyMemory:

@@ -13,7 +13,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// <summary>
     /// Requests whose target pose the animation system samples later (the Unity component plays the target
     /// clip through its playable graph and reads it in the next evaluation, instead of writing it onto the
-    /// scene): <see cref="TransitionPlayer.DeferTransition"/> then <see cref="TransitionPlayer.CompleteDeferredTransition"/>.
+    /// scene): <see cref="TransitionCharacter.DeferTransition"/>, then the sampled target in the next <see cref="TransitionCharacter.Frame"/>.
     /// A deferred request must arrive when the same request made at once would, report its id once, and give
     /// way to newer requests and <see cref="TransitionPlayer.Cancel"/> like any other.
     /// </summary>
@@ -31,8 +31,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             atOnce.PlayUntil(1.0);
             deferred.PlayUntil(1.0);
             var (root, rotations) = atOnce.ClipPose(2.5);
-            int a = atOnce.Player.RequestTransition(root, rotations, 0.5);
-            int d = deferred.Player.DeferTransition(0.5);
+            int a = atOnce.RequestTransition(root, rotations, 0.5);
+            int d = deferred.DeferTransition(0.5);
             Assert.That(d, Is.EqualTo(a), "ids are handed out in request order either way");
             Assert.That(deferred.Player.HasDeferredTransition, Is.True);
 
@@ -44,7 +44,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Assert.That(deferred.Player.Weight, Is.EqualTo(0.0), "nothing to show before the target pose is known");
             }
 
-            Assert.That(deferred.Player.CompleteDeferredTransition(root, rotations), Is.EqualTo(d));
+            // The next frame brings the sampled target (the job read it from its input stream) and starts the request.
+            deferred.Sampled(root, rotations);
+            atOnce.Step();
+            deferred.Step();
+            Assert.That(deferred.Player.CurrentRequestId, Is.EqualTo(d));
             Assert.That(deferred.Player.HasDeferredTransition, Is.False);
             Assert.That(deferred.Player.TargetTime, Is.EqualTo(atOnce.Player.TargetTime).Within(1e-9), "the arrival time asked for when the request was made");
 
@@ -66,15 +70,16 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using var c = new Character();
             c.PlayUntil(1.0);
             var (root, rotations) = c.ClipPose(2.0);
-            int first = c.Player.RequestTransition(root, rotations, 0.8);
+            int first = c.RequestTransition(root, rotations, 0.8);
             c.PlayUntil(1.3);
-            int second = c.Player.DeferTransition(0.5);
+            int second = c.DeferTransition(0.5);
             c.Step();
             Assert.That(c.Player.IsPlaying, Is.True);
             Assert.That(c.Player.CurrentRequestId, Is.EqualTo(first), "the first transition plays on while the second's target is sampled");
             Assert.That(c.Completions, Is.Empty);
 
-            c.Player.CompleteDeferredTransition(root, rotations);
+            c.Sampled(root, rotations);
+            c.Step();
             Assert.That(c.Player.CurrentRequestId, Is.EqualTo(second));
             Assert.That(c.Completions.Count, Is.EqualTo(1));
             Assert.That(c.Completions[0].RequestId, Is.EqualTo(first));
@@ -87,22 +92,23 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using var c = new Character();
             c.PlayUntil(1.0);
             var (root, rotations) = c.ClipPose(2.0);
-            int first = c.Player.DeferTransition(0.5);
-            int second = c.Player.DeferTransition(0.5);
+            int first = c.DeferTransition(0.5);
+            int second = c.DeferTransition(0.5);
             AssertEnded(c, first);
             c.Completions.Clear();
 
-            int third = c.Player.RequestTransition(root, rotations, 0.5);
+            int third = c.RequestTransition(root, rotations, 0.5);
             AssertEnded(c, second);
             Assert.That(c.Player.HasDeferredTransition, Is.False);
             Assert.That(c.Player.CurrentRequestId, Is.EqualTo(third));
             c.Completions.Clear();
 
-            int fourth = c.Player.DeferTransition(0.5);
+            int fourth = c.DeferTransition(0.5);
             c.Player.Cancel();
             Assert.That(c.Completions.ConvertAll(e => e.RequestId), Is.EqualTo(new[] { third, fourth }), "the playing transition and the waiting one, in request order");
             Assert.That(c.Completions.TrueForAll(e => !e.ReachedTarget), Is.True);
             Assert.That(c.Player.HasDeferredTransition, Is.False);
+            // The player refuses a target for no waiting request (the character ignores a sample when none waits).
             Assert.Throws<InvalidOperationException>(() => c.Player.CompleteDeferredTransition(root, rotations));
         }
 
@@ -112,10 +118,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using var c = new Character();
             c.PlayUntil(1.0);
             var (root, rotations) = c.ClipPose(2.0);
-            c.Player.DeferTransition(0.1);
+            c.DeferTransition(0.1);
             // The Animator was culled for a while: the sample came 0.3 s later.
             c.PlayUntil(1.3);
-            c.Player.CompleteDeferredTransition(root, rotations);
+            c.Sampled(root, rotations);
+            c.Step();
             Assert.That(c.Player.TargetTime, Is.EqualTo(c.Player.History.NewestTime + 1.0 / c.Player.FrameRate).Within(1e-9));
         }
 
@@ -123,11 +130,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void ADeferredRequestIsCheckedWhenItIsMade()
         {
             using var c = new Character();
+            // The player alone refuses with no pose recorded (the character records the pose shown before its first frame).
             Assert.Throws<InvalidOperationException>(() => c.Player.DeferTransition(0.5), "no frame shown yet");
             c.PlayUntil(0.5);
-            Assert.Throws<ArgumentOutOfRangeException>(() => c.Player.DeferTransition(0));
-            Assert.Throws<ArgumentOutOfRangeException>(() => c.Player.DeferTransition(double.PositiveInfinity));
-            Assert.Throws<ArgumentOutOfRangeException>(() => c.Player.DeferTransition(3600), "longer than the model spans");
+            Assert.Throws<ArgumentOutOfRangeException>(() => c.DeferTransition(0));
+            Assert.Throws<ArgumentOutOfRangeException>(() => c.DeferTransition(double.PositiveInfinity));
+            Assert.Throws<ArgumentOutOfRangeException>(() => c.DeferTransition(3600), "longer than the model spans");
             Assert.That(c.Player.HasDeferredTransition, Is.False);
             Assert.That(c.Completions, Is.Empty);
         }
@@ -139,39 +147,45 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(c.Completions[0].ReachedTarget, Is.False);
         }
 
-        /// <summary>A character playing a synthetic clip at 60 fps with a player on the tiny model (SLERP only: deterministic and fast).</summary>
+        /// <summary>A character playing a synthetic clip at 60 fps on the tiny model (SLERP only: deterministic and fast), driven as the component drives it.</summary>
         private sealed class Character : IDisposable
         {
             private readonly SyntheticClip _clip;
-            private readonly TransitionScheduler _decoder;
-            private ArrayPoseStream _stream;
+            private readonly TransitionScheduler _scheduler;
+            private readonly PlayingCharacter _character;
 
             public Character()
             {
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = new MainThreadScheduler(model);
+                _scheduler = new MainThreadScheduler(model);
                 ModelContract c = model.Contract;
                 var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.JointCount, 5);
-                Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = true });
+                _character = new PlayingCharacter(map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = true }, _clip.Sample);
                 Player.TransitionCompleted += e => Completions.Add(e);
-                _stream = new ArrayPoseStream(new double[3], new double[4 * c.JointCount]);
             }
 
-            public TransitionPlayer Player { get; }
+            public TransitionPlayer Player => _character.Player;
 
             public List<TransitionCompletion> Completions { get; } = new List<TransitionCompletion>();
 
-            public double Time { get; private set; } = -1.0 / Fps;
+            /// <summary>The character's clock: its last frame's time (0: the pose shown before the first frame).</summary>
+            public double Time => _character.Time;
 
             public (double[] Root, double[] Rotations) ClipPose(double time) => _clip.Pose(time);
 
+            public int RequestTransition(double[] root, double[] rotations, double seconds) => _character.RequestTransition(root, rotations, seconds);
+
+            public int DeferTransition(double seconds) => _character.DeferTransition(seconds);
+
+            /// <summary>The engine sampled the waiting request's target: the next <see cref="Step"/> brings it.</summary>
+            public void Sampled(double[] root, double[] rotations) => _character.Sampled(root, rotations);
+
             public void Step()
             {
-                Time += 1.0 / Fps;
-                _clip.Sample(Time, _stream.Root, _stream.Rotations);
-                _decoder.Pump();
-                Player.Step(Time, ref _stream);
+                // The frame's owner pumps the scheduler; then the character's frame over the controller's output.
+                _scheduler.Pump();
+                _character.Frame(1.0 / Fps);
             }
 
             public void PlayUntil(double time)
@@ -179,7 +193,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 while (Time + 1.0 / Fps <= time + 1e-9) Step();
             }
 
-            public void Dispose() => _decoder.Dispose();
+            public void Dispose() => _scheduler.Dispose();
         }
     }
 }

@@ -32,22 +32,25 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>Tests/Fixtures~/tiny-model.onnx.</summary>
         public static string TinyModel => Path.Combine(Directory, "tiny-model.onnx");
 
+        /// <summary>Tests/Fixtures~/tiny-model-contacts.onnx: the tiny network with a contact head (contract version 3).</summary>
+        public static string TinyContactModel => Path.Combine(Directory, "tiny-model-contacts.onnx");
+
         /// <summary>The golden cases.</summary>
-        public static IReadOnlyList<GoldenCase> Golden
+        public static IReadOnlyList<GoldenCase> Golden => s_golden ??= Read("golden.json");
+
+        /// <summary>The golden cases of <see cref="TinyContactModel"/>, whose outputs include <c>foot_contacts</c>.</summary>
+        public static IReadOnlyList<GoldenCase> GoldenContacts => s_goldenContacts ??= Read("golden-contacts.json");
+
+        private static List<GoldenCase> Read(string name)
         {
-            get
-            {
-                if (s_golden != null) return s_golden;
-                string path = Path.Combine(Directory, "golden.json");
-                JsonValue doc = JsonValue.Parse(File.ReadAllText(path), path);
-                var cases = new List<GoldenCase>();
-                foreach (JsonValue c in doc.ExpectMember("cases").ExpectArray("cases")) cases.Add(new GoldenCase(c));
-                s_golden = cases;
-                return cases;
-            }
+            string path = Path.Combine(Directory, name);
+            JsonValue doc = JsonValue.Parse(File.ReadAllText(path), path);
+            var cases = new List<GoldenCase>();
+            foreach (JsonValue c in doc.ExpectMember("cases").ExpectArray("cases")) cases.Add(new GoldenCase(c));
+            return cases;
         }
 
-        private static List<GoldenCase>? s_golden;
+        private static List<GoldenCase>? s_golden, s_goldenContacts;
     }
 
     /// <summary>One golden case: a request, the PyTorch pipeline's intermediate values and its result.</summary>
@@ -57,7 +60,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             Name = c.ExpectMember("name").ExpectString("name");
             PastFrames = (int)c.ExpectMember("past_frames").ExpectNumber("past_frames");
-            Gap = (int)c.ExpectMember("gap").ExpectNumber("gap");
+            MissingFrames = (int)c.ExpectMember("gap").ExpectNumber("gap");   // n; the fixture's field keeps the exporter's name
             PastRootPositions = Flatten(c.ExpectMember("past_root_positions"));
             PastLocalQuaternions = Flatten(c.ExpectMember("past_local_quaternions"));
             TargetRootPosition = Flatten(c.ExpectMember("target_root_position"));
@@ -73,6 +76,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             JsonValue outputs = c.ExpectMember("outputs");
             RootPositionDelta = Flatten(outputs.ExpectMember("root_position_delta"));
             Rotation6DDelta = Flatten(outputs.ExpectMember("rotation_6d_delta"));
+            FootContacts = outputs.ExpectObject("outputs").TryGetValue("foot_contacts", out JsonValue? contacts) ? Flatten(contacts) : null;
             JsonValue result = c.ExpectMember("result");
             RootPositions = Flatten(result.ExpectMember("root_positions"));
             LocalQuaternions = Flatten(result.ExpectMember("local_quaternions"));
@@ -81,7 +85,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         public string Name { get; }
         public int PastFrames { get; }
-        public int Gap { get; }
+        public int MissingFrames { get; }
         public double[] PastRootPositions { get; }
         public double[] PastLocalQuaternions { get; }
         public double[] TargetRootPosition { get; }
@@ -94,6 +98,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public double[] GapLength { get; }
         public double[] RootPositionDelta { get; }
         public double[] Rotation6DDelta { get; }
+
+        /// <summary>The graph's <c>foot_contacts</c> (n × 4), or null for a model without them.</summary>
+        public double[]? FootContacts { get; }
         public double[] RootPositions { get; }
         public double[] LocalQuaternions { get; }
         public double[] GlobalPositions { get; }
@@ -101,7 +108,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>A transition on <paramref name="skeleton"/> holding this case's keys.</summary>
         public Transition ToTransition(Skeleton skeleton)
         {
-            var t = new Transition(skeleton, PastFrames, Gap);
+            var t = new Transition(skeleton, PastFrames, MissingFrames);
             Array.Copy(PastRootPositions, t.KeyRootPositions, PastRootPositions.Length);
             Array.Copy(TargetRootPosition, 0, t.KeyRootPositions, PastFrames * 3, 3);
             Array.Copy(PastLocalQuaternions, t.KeyLocalRotations, PastLocalQuaternions.Length);

@@ -15,8 +15,8 @@ using NUnit.Framework;
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
-    /// The component's per-frame logic (<see cref="TransitionPlayer"/>) in a simulated game loop on the real
-    /// ONNX Runtime with the tiny fixture model: a character plays its own animation, a transition is
+    /// The component's frame (<see cref="TransitionCharacter.Frame"/>, as <see cref="PlayingCharacter"/> drives it) in a
+    /// simulated game loop on the real ONNX Runtime with the tiny fixture model: a character plays its own animation, a transition is
     /// requested mid-clip, and every rendered frame is checked against the Core in-betweener run on the
     /// same request. Frame times are fixed (30 fps, the model's rate) or variable (144 fps ± 25 % jitter).
     /// </summary>
@@ -26,19 +26,20 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private const double BlendIn = 0.1;
         private const double BlendOut = 0.2;
 
-        public enum Decoding
+        /// <summary>Where the scheduler runs the network.</summary>
+        public enum Scheduler
         {
             WorkerThread,
             MainThread,
         }
 
-        [TestCase(30.0, 0.0, Decoding.WorkerThread)]
-        [TestCase(144.0, 0.25, Decoding.WorkerThread)]
-        [TestCase(30.0, 0.0, Decoding.MainThread)]
-        [TestCase(144.0, 0.25, Decoding.MainThread)]
-        public void TransitionMidClipStartsFromShownPoseReachesTargetOnItsFrameAndEqualsInbetweener(double fps, double jitter, Decoding decoding)
+        [TestCase(30.0, 0.0, Scheduler.WorkerThread)]
+        [TestCase(144.0, 0.25, Scheduler.WorkerThread)]
+        [TestCase(30.0, 0.0, Scheduler.MainThread)]
+        [TestCase(144.0, 0.25, Scheduler.MainThread)]
+        public void TransitionMidClipStartsFromShownPoseReachesTargetOnItsFrameAndEqualsInbetweener(double fps, double jitter, Scheduler scheduler)
         {
-            using var loop = new FrameLoop(fps, jitter, decoding, seed: 3);
+            using var loop = new FrameLoop(fps, jitter, scheduler, seed: 3);
             loop.PlayUntil(1.3);
             // Before any request the character shows its own animation.
             loop.AssertShowsClip();
@@ -47,7 +48,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             double[] shownRotations = (double[])loop.Shown.Rotations.Clone();
             var (targetRoot, targetRotations) = loop.ClipPose(4.0);
             const double duration = 0.5;
-            int id = loop.Player.RequestTransition(targetRoot, targetRotations, duration);
+            int id = loop.RequestTransition(targetRoot, targetRotations, duration);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
             Transition keys = loop.Player.CurrentTransition!;
 
@@ -79,9 +80,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             Assert.That(checkedFrames, Is.GreaterThanOrEqualTo(fps == 30.0 ? 11 : 50), "frames checked between the blend windows");
             // The first rendered frame at or after the target time shows the target, and completes the request.
-            loop.Step();
+            loop.StepOntoTarget();
             Assert.That(loop.Time, Is.GreaterThanOrEqualTo(targetTime - 1e-9));
-            loop.AssertShows(targetRoot, targetRotations, 1e-12);
+            loop.AssertShowsTarget(targetRoot, targetRotations);
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
             Assert.That(loop.Completions[0].RequestId, Is.EqualTo(id));
             Assert.That(loop.Completions[0].ReachedTarget, Is.True);
@@ -94,15 +95,15 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
         }
 
-        [TestCase(30.0, 0.0, Decoding.WorkerThread)]
-        [TestCase(144.0, 0.25, Decoding.WorkerThread)]
-        [TestCase(144.0, 0.25, Decoding.MainThread)]
-        public void NewRequestDuringATransitionStartsFromThePoseBeingShown(double fps, double jitter, Decoding decoding)
+        [TestCase(30.0, 0.0, Scheduler.WorkerThread)]
+        [TestCase(144.0, 0.25, Scheduler.WorkerThread)]
+        [TestCase(144.0, 0.25, Scheduler.MainThread)]
+        public void NewRequestDuringATransitionStartsFromThePoseBeingShown(double fps, double jitter, Scheduler scheduler)
         {
-            using var loop = new FrameLoop(fps, jitter, decoding, seed: 5);
+            using var loop = new FrameLoop(fps, jitter, scheduler, seed: 5);
             loop.PlayUntil(1.0);
             var (rootA, rotationsA) = loop.ClipPose(3.0);
-            int first = loop.Player.RequestTransition(rootA, rotationsA, 0.6);
+            int first = loop.RequestTransition(rootA, rotationsA, 0.6);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
             loop.PlayUntil(loop.Time + 0.3);
             Assert.That(loop.Player.Weight, Is.EqualTo(1.0));
@@ -115,7 +116,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             var (clipRoot, clipRotations) = loop.ClipPose(shownAt);
             Assert.That(MaxDifference(shownRotations, clipRotations), Is.GreaterThan(0.05), "the transition must show something else than the clip");
             var (rootB, rotationsB) = loop.ClipPose(6.0);
-            int second = loop.Player.RequestTransition(rootB, rotationsB, 0.4);
+            int second = loop.RequestTransition(rootB, rotationsB, 0.4);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
 
             // The interrupted request completed once, not reached; the new one starts from the pose shown.
@@ -141,8 +142,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 loop.AssertShowsModelTime((loop.Time - shownAt) / 0.4 * loop.Player.GapFrames, expectedRoots, expectedRotations, 1e-5);
             }
 
-            loop.Step();
-            loop.AssertShows(rootB, rotationsB, 1e-12);
+            loop.StepOntoTarget();
+            loop.AssertShowsTarget(rootB, rotationsB);
             Assert.That(loop.Completions.Count, Is.EqualTo(2));
             Assert.That(loop.Completions[1].RequestId, Is.EqualTo(second));
             Assert.That(loop.Completions[1].ReachedTarget, Is.True);
@@ -155,14 +156,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             // The worker decodes while the game keeps rendering: no frame blocks, and every frame shows
             // either the pose held or a decoded one; the target still lands on its frame.
-            using var loop = new FrameLoop(300, 0.25, Decoding.WorkerThread, seed: 7);
+            using var loop = new FrameLoop(300, 0.25, Scheduler.WorkerThread, seed: 7);
             loop.PlayUntil(1.0);
             var (root, rotations) = loop.ClipPose(2.5);
-            loop.Player.RequestTransition(root, rotations, 0.5);
+            loop.RequestTransition(root, rotations, 0.5);
             double targetTime = loop.Time + 0.5;
             while (loop.Time + loop.NextStep < targetTime - 1e-9) loop.Step();
-            loop.Step();
-            loop.AssertShows(root, rotations, 1e-12);
+            loop.StepOntoTarget();
+            loop.AssertShowsTarget(root, rotations);
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
         }
 
@@ -171,7 +172,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             // The component logs these warnings (MotionInbetweener.WarnOutsideTrainedRange); the player owns
             // the seconds → model frames conversion, so it answers what a request of that length becomes.
-            using var loop = new FrameLoop(60, 0, Decoding.WorkerThread, seed: 13);
+            using var loop = new FrameLoop(60, 0, Scheduler.WorkerThread, seed: 13);
             using Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel);
             ModelContract c = model.Contract;
             (int nMin, int nMax) = c.TrainingMissingFrames;
@@ -187,15 +188,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void RequestsThatCannotBeServedSayWhy()
         {
-            using var loop = new FrameLoop(60, 0, Decoding.WorkerThread, seed: 9);
+            using var loop = new FrameLoop(60, 0, Scheduler.WorkerThread, seed: 9);
             var (root, rotations) = loop.ClipPose(1.0);
+            // The player alone refuses a request with no pose recorded (the character records the pose shown before
+            // its first frame at construction, so through it a request may follow at once).
             var early = Assert.Throws<InvalidOperationException>(() => loop.Player.RequestTransition(root, rotations, 0.5));
             Assert.That(early!.Message, Does.Contain("play at least one frame"));
             loop.PlayUntil(0.5);
             // The tiny model's largest frame index is 255: with P = 10 a transition spans at most 246 model frames.
-            var tooLong = Assert.Throws<ArgumentOutOfRangeException>(() => loop.Player.RequestTransition(root, rotations, 9.0));
+            var tooLong = Assert.Throws<ArgumentOutOfRangeException>(() => loop.RequestTransition(root, rotations, 9.0));
             Assert.That(tooLong!.Message, Does.Contain("this model spans at most 8.2 s"));
-            Assert.Throws<ArgumentOutOfRangeException>(() => loop.Player.RequestTransition(root, rotations, 0));
+            Assert.Throws<ArgumentOutOfRangeException>(() => loop.RequestTransition(root, rotations, 0));
             Assert.That(loop.Player.IsPlaying, Is.False);
             Assert.That(loop.Completions, Is.Empty);
         }
@@ -219,17 +222,19 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly TestRandom _random;
             private readonly SyntheticClip _clip;
             private readonly NamePoseConverter _map;
-            private readonly TransitionScheduler _decoder;
+            private readonly TransitionScheduler _scheduler;
             private readonly Inbetweener _reference;
-            private ArrayPoseStream _stream;
+            private readonly PlayingCharacter _character;
+            private readonly double[] _rootBeforeTarget = new double[3];
+            private double _timeBeforeTarget;
 
-            public FrameLoop(double fps, double jitter, Decoding decoding, int seed)
+            public FrameLoop(double fps, double jitter, Scheduler scheduler, int seed)
             {
                 _fps = fps;
                 _jitter = jitter;
                 _random = new TestRandom(seed);
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(model) : new MainThreadScheduler(model);
+                _scheduler = scheduler == Scheduler.WorkerThread ? new WorkerThreadScheduler(model) : new MainThreadScheduler(model);
                 _reference = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel);
                 ModelContract c = model.Contract;
                 // The character lists its bones in another order than the model: the map must reorder.
@@ -237,44 +242,66 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 names.Reverse();
                 _map = new NamePoseConverter(c.Skeleton, c.UnitScale, names);
                 _clip = new SyntheticClip(names.Count, seed);
-                Player = new TransitionPlayer(_map, _decoder, new PlaybackSettings { BlendInSeconds = BlendIn, BlendOutSeconds = BlendOut, LockFeet = false });
+                var settings = new PlaybackSettings { BlendInSeconds = BlendIn, BlendOutSeconds = BlendOut, LockFeet = false };
+                _character = new PlayingCharacter(_map, _scheduler, settings, _clip.Sample);
                 Player.TransitionCompleted += e => Completions.Add(e);
-                _stream = new ArrayPoseStream(new double[3], new double[4 * names.Count]);
-                Shown = new ArrayPoseStream(new double[3], new double[4 * names.Count]);
                 NextStep = Draw();
-                Time = -NextStep;
             }
 
-            public TransitionPlayer Player { get; }
+            public TransitionPlayer Player => _character.Player;
 
             public List<TransitionCompletion> Completions { get; } = new List<TransitionCompletion>();
 
-            public double Time { get; private set; }
+            /// <summary>The character's clock: its last frame's time (0: the pose shown before the first frame).</summary>
+            public double Time => _character.Time;
 
             /// <summary>The next frame's interval, drawn in advance so that a test can stop before the target frame.</summary>
             public double NextStep { get; private set; }
 
             /// <summary>What the last frame showed.</summary>
-            public ArrayPoseStream Shown { get; }
+            public ArrayPoseStream Shown => _character.Shown;
 
             public (double[] Root, double[] Rotations) ClipPose(double time) => _clip.Pose(time);
 
+            public int RequestTransition(double[] root, double[] rotations, double seconds) => _character.RequestTransition(root, rotations, seconds);
+
             public void Step()
             {
-                Time += NextStep;
+                double step = NextStep;
                 NextStep = Draw();
-                // The controller's output this frame, then the player's layer on top of it.
-                _clip.Sample(Time, _stream.Root, _stream.Rotations);
-                _decoder.Pump();
-                Player.Step(Time, ref _stream);
-                Array.Copy(_stream.Root, Shown.Root, 3);
-                Array.Copy(_stream.Rotations, Shown.Rotations, _stream.Rotations.Length);
-                Assert.That(Player.ShownRotations.ToArray(), Is.EqualTo(Shown.Rotations));
+                // The frame's owner pumps the scheduler; then the character's frame over the controller's output.
+                _scheduler.Pump();
+                _character.Frame(step);
             }
 
             public void PlayUntil(double time)
             {
                 while (Time + NextStep <= time) Step();
+            }
+
+            /// <summary>Steps onto the first frame at or after the target time, noting the root the frame before showed.</summary>
+            public void StepOntoTarget()
+            {
+                Array.Copy(Shown.Root, _rootBeforeTarget, 3);
+                _timeBeforeTarget = Time;
+                Step();
+            }
+
+            /// <summary>
+            /// The frame <see cref="StepOntoTarget"/> stepped onto shows the target: its rotations, and its root moved on
+            /// from the target's at the arrival speed for the time the frame came late (the game's frame carries the root
+            /// past the target time, <see cref="RootMotion"/>; at the target time exactly it is the target's root).
+            /// </summary>
+            public void AssertShowsTarget(double[] root, double[] rotations)
+            {
+                double late = Time - Player.TargetTime;
+                double span = Player.TargetTime - _timeBeforeTarget;
+                Vector3D target = Vector3D.Read(root, 0);
+                Vector3D moved = target - Vector3D.Read(_rootBeforeTarget, 0);
+                var arrival = (1.0 / span) * new Vector3D(moved.X, 0, moved.Z);
+                var movedOn = new double[3];
+                (target + late * arrival).Write(movedOn, 0);
+                AssertShows(movedOn, rotations, 1e-12);
             }
 
             public void AssertShowsClip()
@@ -349,7 +376,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             public void Dispose()
             {
-                _decoder.Dispose();
+                _scheduler.Dispose();
                 _reference.Dispose();
             }
 

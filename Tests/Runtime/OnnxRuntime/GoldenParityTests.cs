@@ -46,7 +46,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             int j = _model.Contract.JointCount;
             Transition t = c.ToTransition(_model.Contract.Skeleton);
-            var global = new double[c.Gap * j * 3];
+            var global = new double[c.MissingFrames * j * 3];
             _model.Inbetween(t, global);
 
             Localization loc = _model.LastLocalization;
@@ -77,10 +77,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Transition whole = c.ToTransition(_model.Contract.Skeleton);
             _model.Inbetween(whole);
             Transition lazy = c.ToTransition(_model.Contract.Skeleton);
-            LazyInbetweener decoder = _model.CreateLazy(c.PastFrames, c.Gap);
-            decoder.Begin(lazy);
+            LazyInbetweener lazyInbetweener = _model.CreateLazy(c.PastFrames, c.MissingFrames);
+            lazyInbetweener.Begin(lazy);
             // Out of order on purpose: a frame depends on the keys only.
-            for (int k = c.Gap - 1; k >= 0; k--) decoder.DecodeFrame(k);
+            for (int k = c.MissingFrames - 1; k >= 0; k--) lazyInbetweener.DecodeFrame(k);
 
             double rotations = MaxAbs(lazy.LocalRotations, whole.LocalRotations);
             double roots = MaxAbs(lazy.RootPositions, whole.RootPositions) * _model.Contract.UnitScale;

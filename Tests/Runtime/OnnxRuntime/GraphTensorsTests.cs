@@ -27,7 +27,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             ModelContract c = Contract(Fixtures.TinyModel);
             foreach (GoldenCase g in Fixtures.Golden)
             {
-                GraphTensors t = GraphTensors.Create(c, ModelGraphKind.Whole, g.PastFrames, g.Gap, g.Gap);
+                GraphTensors t = GraphTensors.Create(c, ModelGraphKind.Whole, g.PastFrames, g.MissingFrames, g.MissingFrames);
                 Assert.That(Array.ConvertAll(t.KeyFrameIndices!.Longs!, v => (double)v), Is.EqualTo(g.KeyFrameIndices), g.Name);
                 Assert.That(Array.ConvertAll(t.QueryFrameIndices!.Longs!, v => (double)v), Is.EqualTo(g.QueryFrameIndices), g.Name);
                 Assert.That(Array.ConvertAll(t.GapLength.Longs!, v => (double)v), Is.EqualTo(g.GapLength), g.Name);

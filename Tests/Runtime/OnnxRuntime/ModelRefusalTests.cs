@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
@@ -43,10 +44,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void OtherContractVersionIsRefused()
         {
-            string path = Patched("v3.onnx", ("contract_version\u0012\u00012", "contract_version\u0012\u00013"), ("\"contract_version\": 2", "\"contract_version\": 3"));
+            string path = Patched("v4.onnx", ("contract_version\u0012\u00013", "contract_version\u0012\u00014"), ("\"contract_version\": 3", "\"contract_version\": 4"));
             string message = Refusal(path);
-            Assert.That(message, Does.Contain("contract version 3"));
-            Assert.That(message, Does.Contain("expected a version from 1 to 2"));
+            Assert.That(message, Does.Contain("contract version 4"));
+            Assert.That(message, Does.Contain("expected a version from 1 to 3"));
         }
 
         [Test]
@@ -73,7 +74,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             string path = Path.Combine(_dir, "text.onnx");
             File.WriteAllText(path, "HIERARCHY\nROOT Hips\n");
             string message = Refusal(path);
-            Assert.That(message, Does.Contain("cannot load it as an ONNX model"));
+            // Core reads the graph's operators from the bytes before ONNX Runtime sees them (ModelOperators), so its
+            // protobuf reader is the first to say that this is no ONNX file.
+            Assert.That(message, Does.Contain("not a well-formed ONNX file"));
         }
 
         [Test]
@@ -124,6 +127,111 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(e.Message, Does.Contain("the model has 22 joints but the transition's skeleton has 21"));
         }
 
+        [Test]
+        public void TheContactFixtureLoadsWithItsContacts()
+        {
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(Path.Combine(Fixtures.Directory, "tiny-model-contacts.onnx"), requireLazy: true);
+            Assert.That(model.Contract.HasFootContacts, Is.True);
+            Assert.That(model.Contract.ContactJoints, Is.EqualTo(new[] { "LeftFoot", "LeftToe", "RightFoot", "RightToe" }));
+            Assert.That(model.Contract.ContactThreshold, Is.EqualTo(0.4));
+        }
+
+        [Test]
+        public void ContactOutputOfTheWrongShapeIsRefused()
+        {
+            // The head's Sigmoid becomes a Flatten (same length): foot_contacts comes out [B, N·4], not [B, N, 4].
+            string path = PatchedContacts("flat.onnx", ("Sigmoid", "Flatten"));
+            string message = Refusal(path);
+            Assert.That(message, Does.Contain("foot_contacts"));
+        }
+
+        [Test]
+        public void MissingContactOutputIsRefused()
+        {
+            // Renamed everywhere in the graph (it still runs), so the metadata's contact joints have no output.
+            string path = PatchedContacts("renamed.onnx", ("foot_contacts", "foot_contactz"));
+            string message = Refusal(path);
+            Assert.That(message, Does.Contain("the metadata names contact_joints but the whole graph has no output 'foot_contacts'"));
+        }
+
+        [Test]
+        public void ContactOutputWithoutContactJointsIsRefused()
+        {
+            string path = PatchedContacts("unnamed.onnx", ("\"contact_joints\"", "\"contact_jointz\""), ("\"contact_threshold\"", "\"contact_thresholx\""));
+            string message = Refusal(path);
+            Assert.That(message, Does.Contain("has a 'foot_contacts' output but its metadata names no contact_joints"));
+        }
+
+        [TestCase("\"contact_threshold\": 0.4", "\"contact_threshold\": 1.4", "metadata contact_threshold is 1.4")]
+        [TestCase("\"contact_threshold\": 0.4", "\"contact_threshold\": 0.0", "metadata contact_threshold is 0")]
+        [TestCase("\"LeftToe\", \"RightFoot\"", "\"LeftToe\", \"RightHand\"", "contact_joints[2] is 'RightHand' but the foot locker's channel 2 is 'RightFoot'")]
+        [TestCase("\"LeftToe\", \"RightFoot\"", "\"LeftToe\",  \"LeftFoot\"", "contact_joints names 'LeftFoot' twice")]
+        [TestCase("\"LeftToe\", \"RightFoot\"", "\"LeftToe\", \"RightFooX\"", "contact_joints[2] is 'RightFooX', not a joint of the model's skeleton")]
+        public void BadContactMetadataIsRefused(string from, string to, string expected)
+        {
+            string path = PatchedContacts("meta.onnx", (from, to));
+            string message = Refusal(path);
+            Assert.That(message, Does.Contain(expected));
+        }
+
+        [Test]
+        public void ContactProbabilitiesThatAreNotFiniteAreRefused()
+        {
+            // The real graph runs; the engine's foot_contacts come back NaN (a broken head or engine), which the probe refuses.
+            string path = PatchedContacts("nan.onnx");
+            var e = Assert.Throws<ModelContractException>(() => new Inbetweener(new NaNContacts(OnnxRuntimeBackend.Load(path))).Dispose())!;
+            OneLine(e.Message, path);
+            Assert.That(e.Message, Does.Contain("foot_contacts output holds NaN"));
+        }
+
+        [Test]
+        public void TheVersion2FixtureLoadsWithoutContacts()
+        {
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(Path.Combine(Fixtures.Directory, "tiny-model-v2.onnx"), requireLazy: true);
+            Assert.That(model.Contract.ContractVersion, Is.EqualTo(2));
+            Assert.That(model.Contract.HasFootContacts, Is.False);
+        }
+
+        /// <summary>A real backend whose <c>foot_contacts</c> output is overwritten with NaN after every run.</summary>
+        private sealed class NaNContacts : IInferenceBackend
+        {
+            private readonly IInferenceBackend _inner;
+
+            public NaNContacts(IInferenceBackend inner) => _inner = inner;
+
+            public ModelDescription Description => _inner.Description;
+
+            public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs) => new Binding(_inner.Bind(inputs, outputs), outputs);
+
+            public void Dispose() => _inner.Dispose();
+
+            private sealed class Binding : IInferenceBinding
+            {
+                private readonly IInferenceBinding _inner;
+                private readonly IReadOnlyList<InferenceTensor> _outputs;
+
+                public Binding(IInferenceBinding inner, IReadOnlyList<InferenceTensor> outputs)
+                {
+                    _inner = inner;
+                    _outputs = outputs;
+                }
+
+                public void Run()
+                {
+                    _inner.Run();
+                    foreach (InferenceTensor t in _outputs)
+                    {
+                        if (t.Name == TensorNames.FootContacts) t.Floats![1] = float.NaN;
+                    }
+                }
+
+                public void Dispose() => _inner.Dispose();
+            }
+        }
+
+        /// <summary>A copy of the contact fixture (whole graph only) with same-length replacements.</summary>
+        private string PatchedContacts(string name, params (string From, string To)[] edits) => Patched(Path.Combine(Fixtures.Directory, "tiny-model-contacts.onnx"), name, edits);
+
         private string Refusal(string path)
         {
             var e = Assert.Throws<ModelContractException>(() => OnnxRuntimeInbetweener.Load(path).Dispose())!;
@@ -148,9 +256,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>A copy of the tiny fixture with same-length replacements (each must occur).</summary>
-        private string Patched(string name, params (string From, string To)[] edits)
+        private string Patched(string name, params (string From, string To)[] edits) => Patched(Fixtures.TinyModel, name, edits);
+
+        private string Patched(string source, string name, params (string From, string To)[] edits)
         {
-            byte[] bytes = File.ReadAllBytes(Fixtures.TinyModel);
+            byte[] bytes = File.ReadAllBytes(source);
             foreach ((string from, string to) in edits)
             {
                 byte[] f = Bytes(from), t = Bytes(to);

@@ -191,7 +191,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             public const string EngineMessage = "simulated GPU worker failure";
             private readonly SyntheticClip _clip;
-            private readonly TransitionScheduler _decoder;
+            private readonly TransitionScheduler _scheduler;
             private readonly RunBudget _budget;
             private readonly TransitionCharacter _character;
             private readonly double[] _shown;
@@ -207,13 +207,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     new FailingBackend(OnnxRuntimeBackend.Load(whole.Replace(".onnx", ".frame.onnx")), _budget));
                 // Loading probes each graph once; the budget counts the runs of play only.
                 _budget.Arm(runsBeforeFailure);
-                _decoder = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(inbetweener) : new MainThreadScheduler(inbetweener);
+                _scheduler = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(inbetweener) : new MainThreadScheduler(inbetweener);
                 ModelContract c = inbetweener.Contract;
                 var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.Skeleton.JointCount, seed: 11);
                 Settings = new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2 };
                 _mode = mode;
-                _character = new TransitionCharacter(map, _decoder, Settings, RootFrame.Identity, ModelName, EngineName);
+                _character = new TransitionCharacter(map, _scheduler, Settings, RootFrame.Identity, ModelName, EngineName);
                 Player.TransitionCompleted += e => Completions.Add(e);
                 _stream = new ArrayPoseStream(new double[3], new double[4 * c.Skeleton.JointCount]);
                 Shown = new ArrayPoseStream(new double[3], new double[4 * c.Skeleton.JointCount]);
@@ -263,7 +263,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             public void Frame(double deltaTime, double unscaledDeltaTime, FrameCallback callback = FrameCallback.Update)
             {
                 // The frame's owner pumps the scheduler once; a component that is not running has no character to call.
-                _decoder.Pump();
+                _scheduler.Pump();
                 if (!Status.IsRunning)
                 {
                     // Not running: the character shows its own animation.
@@ -307,7 +307,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 return _shown;
             }
 
-            public void Dispose() => _decoder.Dispose();
+            public void Dispose() => _scheduler.Dispose();
         }
 
         private sealed class RunBudget

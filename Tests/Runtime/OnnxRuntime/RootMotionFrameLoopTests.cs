@@ -133,7 +133,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double _jitter;
             private readonly TestRandom _random;
             private readonly UnityHumanoid _humanoid;
-            private readonly TransitionScheduler _decoder;
+            private readonly TransitionScheduler _scheduler;
             private readonly TransitionCharacter _character;
             private readonly double[] _shown;
             private readonly double _hipsHeight;
@@ -150,10 +150,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _jitter = jitter;
                 _random = new TestRandom(17);
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = new MainThreadScheduler(model);
+                _scheduler = new MainThreadScheduler(model);
                 _humanoid = UnityHumanoid.Model(model.Contract.Skeleton, UnityHumanoid.Blender, seed: 21);
                 SkeletonPoseConverter map = _humanoid.Rig.CreatePoseConverter(model.Contract.Skeleton);
-                _character = new TransitionCharacter(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = slerpOnly }, map.Armature, "tiny", "ONNX Runtime");
+                _character = new TransitionCharacter(map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = slerpOnly }, map.Armature, "tiny", "ONNX Runtime");
                 Player = _character.Player;
                 Player.TransitionCompleted += e => Completions.Add(e);
                 int n = _humanoid.BoneCount;
@@ -239,7 +239,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Vector3D controllerVelocity = _rootMotionOn ? Quaternions.Apply(Character.Rotation, (_speed) * Vector3D.UnitZ) : Vector3D.Zero;
 
                 // The frame's owner pumps the scheduler; then MotionInbetweener.Update: what Unity read, one call.
-                _decoder.Pump();
+                _scheduler.Pump();
                 var input = new CharacterFrameInput
                 {
                     Callback = FrameCallback.Update,
@@ -278,7 +278,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Scale = f.Scale,
             };
 
-            public void Dispose() => _decoder.Dispose();
+            public void Dispose() => _scheduler.Dispose();
 
             /// <summary>
             /// The controller walking at the set speed: with root motion on, in place (the velocity moves the

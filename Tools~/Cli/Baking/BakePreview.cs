@@ -46,6 +46,34 @@ namespace DeltaInterpolator.Cli.Baking
             }
         }
 
+        /// <summary>
+        /// The model's track marks the contacts it predicted (issue 29) where it filled a frame, on the rig's frames
+        /// (nearest in time), and the measure's rule on its keys; false when the model predicts none.
+        /// </summary>
+        private static bool MarkPredictedFeet(PreviewScene scene, int track, BakeRun run, MotionClip onRig, FootRig feet)
+        {
+            MethodBake model = run["Model"];
+            if (!model.Contacts.AnyPredicted) return false;
+            var contacts = new FootContacts();
+            model.Contacts.ResampleInto(contacts, onRig.FrameCount, onRig.FrameTime, model.OnModel.FrameTime,
+                run.RigKeys[0] * onRig.FrameTime - run.ModelKeys[0] * model.OnModel.FrameTime);
+            PreviewTrack t = scene.Tracks[track];
+            IReadOnlyList<int> joints = feet.FootJoints;
+            bool[] planted = t.Planted!;
+            for (int f = 0; f < onRig.FrameCount; f++)
+            {
+                if (!contacts.IsPredicted(f)) continue;
+                for (int c = 0, k = 0; c < FootContacts.ChannelCount; c++)
+                {
+                    if (c % 2 == 1 && !feet[c / 2].HasToe) continue;
+                    planted[f * joints.Count + k++] = contacts.IsPlanted(f, c);
+                }
+            }
+
+            t.MarkPlantedFeet(joints, planted);
+            return true;
+        }
+
         /// <summary>The HTML player (and contact sheet) of ground truth, SLERP and model over the baked frames, on the input's skeleton.</summary>
         public static void Write(BvhAnimation animation, BakeRun run, string htmlPath, string? pngPath, bool force)
         {
@@ -57,9 +85,13 @@ namespace DeltaInterpolator.Cli.Baking
             string title = Path.GetFileName(animation.SourceName) + $", frames {first}–{run.RigKeys[keys.Length - 1]}";
             MotionClip[] clips = { truth, run["SLERP"].OnRig, model };
             PreviewScene scene = PreviewScene.FromClips(title, new[] { ("Ground truth", clips[0]), ("SLERP", clips[1]), ("Model", clips[2]) }, keys, 0);
-            MarkPlantedFeet(scene, clips, BakeScores.Feet(run, truth.Skeleton));
+            scene.FirstFrame = first;
+            FootRig feet = BakeScores.Feet(run, truth.Skeleton);
+            MarkPlantedFeet(scene, clips, feet);
+            bool predicted = MarkPredictedFeet(scene, 2, run, model, feet);
             PreviewWriter.WriteHtml(scene, htmlPath);
-            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB): ground truth, SLERP and model, {2} frames, {3} keys", htmlPath, new FileInfo(htmlPath).Length / 1024.0, scene.FrameCount, keys.Length)));
+            AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture, "wrote {0} ({1:0} KB): ground truth, SLERP and model, {2} frames, {3} keys{4}", htmlPath, new FileInfo(htmlPath).Length / 1024.0, scene.FrameCount, keys.Length,
+                predicted ? "; the model's footprints are the contacts it predicted" : "")));
             if (pngPath == null) return;
             string? fallback = null;
             string written = pngPath;

@@ -40,6 +40,8 @@ namespace DeltaInterpolator.Cli.Baking
                 w.WriteNumber("leg_length", leg);
                 w.WriteString("retargeting", run.Rig.Description);
                 w.WriteString("feet", feetLocked ? "lock" : "off");
+                // Where the model's locker took its contacts from (issue 29): the network's own where it predicts them; SLERP's are always labelled.
+                if (feetLocked) w.WriteString("model_contacts", contract.HasFootContacts ? "predicted" : "labelled");
                 w.WriteNumber("foot_contact_samples", scores.TruthSkating.ContactSamples);
                 Skating(w, "ground_truth_foot_skating", scores.TruthSkating);
                 w.WriteStartObject("methods");

@@ -22,6 +22,7 @@ namespace DeltaInterpolator.Cli.Baking
             BakePlan plan = modelBake.Plan;
             BakeSettings settings = modelBake.Method.Settings;
             foreach (string warning in plan.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(warning));
+            foreach (string warning in run.Warnings) AnsiConsole.MarkupLine("[yellow]warning:[/] " + Markup.Escape(TerminalText.Safe(warning, TerminalText.LineLength)));
             MotionClip motion = animation.Motion;
             int[] keys = new int[run.RigKeys.Count];
             for (int i = 0; i < keys.Length; i++) keys[i] = run.RigKeys[i];
@@ -39,7 +40,7 @@ namespace DeltaInterpolator.Cli.Baking
             AnsiConsole.Write(table);
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "feet: {0}; foot skating: mean horizontal speed of ankles and toes on the {1:N0} (frame, joint) pairs where the ground truth's are planted (within 3 % of a leg of the ground, under 15 % of a leg per second), in leg lengths per second",
-                request.Feet != null ? "locked (--feet lock: planted feet held still on the filled frames, keys untouched)" : "not locked (--feet off)", scores.TruthSkating.ContactSamples)));
+                request.Feet == null ? "not locked (--feet off)" : run.Warnings.Count > 0 ? "not locked on this rig (see the warning above)" : "locked (--feet lock: planted feet held still on the filled frames, keys untouched)", scores.TruthSkating.ContactSamples)));
 
             string policy = settings.ShortContext == ShortContextPolicy.RepeatEarliest ? "repeat the earliest" : "feed what exists";
             string trained = settings.TrainedPastFrames is { } p ? $"trained on {p.Min}..{p.Max} past frames" : "trained past range unknown";

@@ -23,8 +23,8 @@ namespace DeltaInterpolator.Cli.Presenters
             if (options.EffectivePastFrames != options.PastFrames)
             {
                 string layout = options.ShortContext == ShortContextPolicy.RepeatEarliest
-                    ? $"repeated to {options.KeyPastFrames} past keys (--past-policy repeat)"
-                    : $"fed alone as {options.KeyPastFrames} past keys (--past-policy feed)";
+                    ? $"repeated to {options.TransitionPastFrames} past keys (--past-policy repeat)"
+                    : $"fed alone as {options.TransitionPastFrames} past keys (--past-policy feed)";
                 AnsiConsole.MarkupLine(Markup.Escape($"past frames: the last {options.EffectivePastFrames} of {options.PastFrames}, {layout}"));
             }
 

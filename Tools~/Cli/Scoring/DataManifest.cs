@@ -13,7 +13,9 @@ namespace DeltaInterpolator.Cli.Scoring
     /// <c>"folder"</c> names the folder relative to it; <c>defaults</c> and <c>files</c> (globs on the path
     /// relative to the folder, later matches win) with <c>from_frame</c>, <c>reference_frame</c>, <c>fps</c>,
     /// <c>map</c>, <c>skip</c>, <c>up</c> (the file's up axis: "auto", "y" or "z", as <c>--up</c>) and
-    /// <c>accept_reference_pose</c> (true: as <c>--accept-reference-pose</c> for that file); <c>groups</c>, a regex whose group 1 names a file's subject.
+    /// <c>accept_reference_pose</c> (true: as <c>--accept-reference-pose</c> for that file); <c>groups</c>, a regex whose group 1 names a file's subject. Both readers
+    /// refuse the same values with the same messages; <c>Tests/Fixtures~/manifests</c> holds fixtures that both
+    /// test suites read to the same files, settings and refusals (<c>ManifestFixtureTests</c>, <c>test_manifest_fixtures.py</c>).
     /// </summary>
     internal sealed class DataManifest
     {
@@ -24,6 +26,10 @@ namespace DeltaInterpolator.Cli.Scoring
 
         private readonly List<KeyValuePair<string, Dictionary<string, JsonElement>>> _files = new List<KeyValuePair<string, Dictionary<string, JsonElement>>>();
         private readonly Dictionary<string, JsonElement> _defaults = new Dictionary<string, JsonElement>(StringComparer.Ordinal);
+        private const string SettingsExpected = "expected {\"from_frame\": 1, ...}";
+        private const string GroupsExpected = "expected e.g. \"^(\\\\d+)_\"";
+        private static readonly TimeSpan GroupsTimeLimit = TimeSpan.FromSeconds(1);
+        private static readonly Regex CountedRepeat = new Regex(@"^\{\d*,?\d*\}", RegexOptions.CultureInvariant);
         private Regex? _groups;
 
         private DataManifest(string folder, string? path)
@@ -92,9 +98,8 @@ namespace DeltaInterpolator.Cli.Scoring
         {
             var result = new List<Entry>();
             string root = System.IO.Path.GetFullPath(Folder);
-            // Bounded depth: a symbolic link that loops back into the folder cannot recurse forever.
-            var files = new List<string>(Directory.EnumerateFiles(root, "*", new EnumerationOptions { RecurseSubdirectories = true, MaxRecursionDepth = 16, AttributesToSkip = 0, IgnoreInaccessible = true }));
-            files.Sort(StringComparer.Ordinal);
+            // Each real folder once: a directory link looping back into the folder adds nothing.
+            List<string> files = DataFolderWalk.Files(root);
             string baseDir = Path == null ? root : System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(Path))!;
             foreach (string file in files)
             {
@@ -117,7 +122,16 @@ namespace DeltaInterpolator.Cli.Scoring
                 string group = "";
                 if (_groups != null)
                 {
-                    Match m = _groups.Match(name);
+                    Match m;
+                    try
+                    {
+                        m = _groups.Match(name);
+                    }
+                    catch (RegexMatchTimeoutException)
+                    {
+                        throw Refusal(Path!, $"\"groups\" took over {GroupsTimeLimit.TotalSeconds:0} s on {Quoted(name)}", "expected a pattern that does not backtrack catastrophically");
+                    }
+
                     if (m.Success && m.Groups.Count > 1) group = m.Groups[1].Value;
                 }
 
@@ -136,27 +150,8 @@ namespace DeltaInterpolator.Cli.Scoring
             return false;
         }
 
-        /// <summary>Python's fnmatch.fnmatchcase: * and ? match any character ('/' too), [seq] and [!seq] sets.</summary>
-        internal static bool Glob(string pattern, string text)
-        {
-            var rx = new System.Text.StringBuilder("^");
-            for (int i = 0; i < pattern.Length; i++)
-            {
-                char c = pattern[i];
-                if (c == '*') rx.Append(".*");
-                else if (c == '?') rx.Append('.');
-                else if (c == '[' && pattern.IndexOf(']', i + 1) > i + 1)
-                {
-                    int end = pattern.IndexOf(']', i + 2 <= pattern.Length - 1 ? i + 2 : i + 1);
-                    string body = pattern.Substring(i + 1, end - i - 1);
-                    rx.Append('[').Append(body.StartsWith("!", StringComparison.Ordinal) ? "^" + Regex.Escape(body.Substring(1)) : Regex.Escape(body)).Append(']');
-                    i = end;
-                }
-                else rx.Append(Regex.Escape(c.ToString()));
-            }
-
-            return Regex.IsMatch(text, rx.Append('$').ToString(), RegexOptions.Singleline, TimeSpan.FromSeconds(1));
-        }
+        /// <summary>Python's fnmatch.fnmatchcase (<see cref="FileGlob"/>): * and ? match any character ('/' too), [seq] and [!seq] sets.</summary>
+        internal static bool Glob(string pattern, string text) => FileGlob.Parse(pattern).Matches(text);
 
         private static int? Int(Dictionary<string, JsonElement> settings, string key)
             => settings.TryGetValue(key, out JsonElement v) && v.ValueKind == JsonValueKind.Number && v.TryGetInt32(out int i) ? i : (int?)null;
@@ -182,32 +177,28 @@ namespace DeltaInterpolator.Cli.Scoring
                 if (root.ValueKind != JsonValueKind.Object) throw new CliErrors.UsageException($"{path}: holds no JSON object; expected a data manifest");
                 foreach (JsonProperty p in root.EnumerateObject())
                 {
-                    if (!TopFields.Contains(p.Name)) throw new CliErrors.UsageException($"{path}: unknown field \"{TerminalText.Safe(p.Name, 80)}\"; expected folder, licence, defaults, files, groups, comment");
+                    if (!TopFields.Contains(p.Name)) throw Refusal(path, $"unknown field {Quoted(p.Name)}", "expected folder, licence, defaults, files, groups, comment");
                 }
 
-                if (root.TryGetProperty("defaults", out JsonElement d)) Settings(path, d, _defaults);
+                if (root.TryGetProperty("defaults", out JsonElement d))
+                {
+                    if (d.ValueKind != JsonValueKind.Object) throw Refusal(path, "\"defaults\" is not an object", SettingsExpected);
+                    Settings(path, d, _defaults);
+                }
+
                 if (root.TryGetProperty("files", out JsonElement files))
                 {
-                    if (files.ValueKind != JsonValueKind.Object) throw new CliErrors.UsageException($"{path}: \"files\" is not an object; expected {{GLOB: {{setting: value}}}}");
+                    if (files.ValueKind != JsonValueKind.Object) throw Refusal(path, "\"files\" is not an object", "expected {GLOB: {setting: value}}");
                     foreach (JsonProperty p in files.EnumerateObject())
                     {
+                        if (p.Value.ValueKind != JsonValueKind.Object) throw Refusal(path, $"\"files\" {Quoted(p.Name)} is not an object", SettingsExpected);
                         var s = new Dictionary<string, JsonElement>(StringComparer.Ordinal);
                         Settings(path, p.Value, s);
                         _files.Add(new KeyValuePair<string, Dictionary<string, JsonElement>>(p.Name, s));
                     }
                 }
 
-                if (root.TryGetProperty("groups", out JsonElement g) && g.ValueKind == JsonValueKind.String)
-                {
-                    try
-                    {
-                        _groups = new Regex(g.GetString()!, RegexOptions.None, TimeSpan.FromSeconds(1));
-                    }
-                    catch (ArgumentException)
-                    {
-                        throw new CliErrors.UsageException($"{path}: \"groups\" is not a regular expression; expected e.g. \"^(\\\\d+)_\"");
-                    }
-                }
+                if (root.TryGetProperty("groups", out JsonElement g)) _groups = Groups(path, g);
 
                 if (!expectFolder) return null;
                 if (!root.TryGetProperty("folder", out JsonElement folder) || folder.ValueKind != JsonValueKind.String)
@@ -223,23 +214,163 @@ namespace DeltaInterpolator.Cli.Scoring
 
         private static void Settings(string path, JsonElement element, Dictionary<string, JsonElement> into)
         {
-            if (element.ValueKind != JsonValueKind.Object) throw new CliErrors.UsageException($"{path}: per-file settings that are not an object; expected {{\"from_frame\": 1, ...}}");
             foreach (JsonProperty p in element.EnumerateObject())
             {
-                if (!FileFields.Contains(p.Name)) throw new CliErrors.UsageException($"{path}: unknown setting \"{TerminalText.Safe(p.Name, 80)}\"; expected from_frame, reference_frame, fps, map, skip, up, accept_reference_pose");
+                if (!FileFields.Contains(p.Name)) throw Refusal(path, $"unknown setting {Quoted(p.Name)}", "expected from_frame, reference_frame, fps, map, skip, up, accept_reference_pose");
                 if (p.Name == "up" && p.Value.ValueKind != JsonValueKind.Null
                     && (p.Value.ValueKind != JsonValueKind.String || p.Value.GetString() is not ("auto" or "y" or "z")))
                 {
-                    throw new CliErrors.UsageException($"{path}: \"up\": {TerminalText.Safe(p.Value.GetRawText(), 40)}; expected \"auto\", \"y\" or \"z\" (or null)");
+                    throw Refusal(path, $"\"up\": {Text(p.Value)}", "expected \"auto\", \"y\" or \"z\" (or null)");
                 }
 
                 if (p.Name == "accept_reference_pose" && p.Value.ValueKind is not (JsonValueKind.True or JsonValueKind.False or JsonValueKind.Null))
                 {
-                    throw new CliErrors.UsageException($"{path}: \"accept_reference_pose\": {TerminalText.Safe(p.Value.GetRawText(), 40)}; expected true or false (or null)");
+                    throw Refusal(path, $"\"accept_reference_pose\": {Text(p.Value)}", "expected true or false (or null)");
                 }
 
                 into[p.Name] = p.Value.Clone();
             }
+
+            // The values prepare refuses (datasets.py _check_settings), refused here too rather than ignored.
+            foreach (string key in new[] { "from_frame", "reference_frame" })
+            {
+                if (into.TryGetValue(key, out JsonElement v) && v.ValueKind != JsonValueKind.Null
+                    && !(v.ValueKind == JsonValueKind.Number && v.TryGetInt32(out int frame) && frame >= 0 && frame < 1_000_000))
+                {
+                    throw Refusal(path, $"\"{key}\": {Text(v)}", "expected a frame index from 0 (or null)");
+                }
+            }
+
+            if (into.TryGetValue("fps", out JsonElement fps) && fps.ValueKind != JsonValueKind.Null
+                && !(fps.ValueKind == JsonValueKind.Number && fps.TryGetDouble(out double rate) && rate >= 1 && rate <= 1000))
+            {
+                throw Refusal(path, $"\"fps\": {Text(fps)}", "expected a frame rate from 1 to 1000 (or null)");
+            }
+
+            if (into.TryGetValue("map", out JsonElement map) && map.ValueKind != JsonValueKind.Null && map.ValueKind != JsonValueKind.String)
+            {
+                throw Refusal(path, $"\"map\": {Text(map)}", "expected a path to a JSON joint map (or null)");
+            }
+
+            if (into.TryGetValue("skip", out JsonElement skip) && skip.ValueKind != JsonValueKind.True && skip.ValueKind != JsonValueKind.False)
+            {
+                throw Refusal(path, $"\"skip\": {Text(skip)}", "expected true or false");
+            }
         }
+
+        /// <summary>
+        /// The <c>groups</c> regex: a string that parses and cannot backtrack catastrophically (issue 31, classes 12,
+        /// 14), refused with prepare's messages. Matching keeps a time limit as well, for patterns the scan lets through.
+        /// </summary>
+        private static Regex Groups(string path, JsonElement groups)
+        {
+            if (groups.ValueKind != JsonValueKind.String)
+            {
+                throw Refusal(path, $"\"groups\": {Text(groups)}", "expected a regular expression (a string) whose group 1 names a file's subject, e.g. \"^(\\\\d+)_\"");
+            }
+
+            string pattern = groups.GetString()!;
+            Regex regex;
+            try
+            {
+                regex = new Regex(pattern, RegexOptions.None, GroupsTimeLimit);
+            }
+            catch (ArgumentException)
+            {
+                throw Refusal(path, "\"groups\" is not a regular expression", GroupsExpected);
+            }
+
+            if (RepeatsABacktrackingGroup(pattern))
+            {
+                throw Refusal(path, "\"groups\" repeats a group that holds a repetition or an alternative (catastrophic backtracking)", GroupsExpected);
+            }
+
+            return regex;
+        }
+
+        /// <summary>
+        /// Whether <paramref name="pattern"/> applies *, + or {m,n} to a group that itself holds a repetition (*, +, ?,
+        /// {m,n}) or an alternative (|): the shape whose matching time can grow exponentially with the text. The same
+        /// scan as the trainer's <c>datasets.repeats_a_backtracking_group</c>.
+        /// </summary>
+        internal static bool RepeatsABacktrackingGroup(string pattern)
+        {
+            var risky = new Stack<bool>();
+            int i = 0, n = pattern.Length;
+            while (i < n)
+            {
+                char c = pattern[i];
+                if (c == '\\')
+                {
+                    i += 2;
+                    continue;
+                }
+
+                if (c == '[')
+                {
+                    int j = i + 1;
+                    if (j < n && pattern[j] == '^') j++;
+                    if (j < n && pattern[j] == ']') j++;
+                    while (j < n && pattern[j] != ']') j += pattern[j] == '\\' ? 2 : 1;
+                    i = j + 1;
+                    continue;
+                }
+
+                if (c == '(')
+                {
+                    risky.Push(false);
+                    i++;
+                    if (i < n && pattern[i] == '?')
+                    {
+                        i++;
+                        bool lookbehind = At(pattern, i, "<=") || At(pattern, i, "<!");
+                        if (At(pattern, i, "P<") || (At(pattern, i, "<") && !lookbehind))
+                        {
+                            int close = pattern.IndexOf('>', i);
+                            i = close < 0 ? n : close + 1;
+                        }
+                        else i += lookbehind ? 2 : 1;
+                    }
+
+                    continue;
+                }
+
+                if (c == ')')
+                {
+                    bool inner = risky.Count > 0 && risky.Pop();
+                    i++;
+                    if (RepeatAt(pattern, i) && inner) return true;
+                    if (risky.Count > 0 && (inner || RepeatAt(pattern, i) || (i < n && pattern[i] == '?')))
+                    {
+                        risky.Pop();
+                        risky.Push(true);
+                    }
+
+                    continue;
+                }
+
+                if (risky.Count > 0 && (c == '|' || c == '*' || c == '+' || c == '?' || RepeatAt(pattern, i)))
+                {
+                    risky.Pop();
+                    risky.Push(true);
+                }
+
+                i++;
+            }
+
+            return false;
+        }
+
+        private static bool At(string text, int index, string part) => string.CompareOrdinal(text, index, part, 0, part.Length) == 0;
+
+        private static bool RepeatAt(string pattern, int i)
+            => i < pattern.Length && (pattern[i] == '*' || pattern[i] == '+' || (pattern[i] == '{' && CountedRepeat.IsMatch(pattern.Substring(i))));
+
+        private static CliErrors.UsageException Refusal(string path, string what, string expected) => new CliErrors.UsageException($"{path}: {what}; {expected}");
+
+        /// <summary>A value as the manifest wrote it (its JSON text), safe for a terminal.</summary>
+        private static string Text(JsonElement value) => TerminalText.Safe(value.GetRawText(), 80);
+
+        private static string Quoted(string name) => "\"" + TerminalText.Safe(name, 80) + "\"";
     }
 }

@@ -139,7 +139,7 @@ namespace DeltaInterpolator.Cli.Verbs
             table.AddRow("Graph", ModelContract.GraphName(c.Graph));
             table.AddRow("Contract version", string.Format(CultureInfo.InvariantCulture, "{0} (this runtime reads {1} to {2})", c.ContractVersion, ModelContract.MinSupportedVersion, ModelContract.MaxSupportedVersion));
             table.AddRow("Skeleton", string.Format(CultureInfo.InvariantCulture, "{0} joints, root '{1}'", c.JointCount, Markup.Escape(TerminalText.Safe(c.Skeleton.Names[0], TerminalText.NameLength))));
-            table.AddRow("Unit scale", ModelContract.Fmt(c.UnitScale));
+            table.AddRow("Unit scale", c.UnitScale.ToString("R", CultureInfo.InvariantCulture));
             table.AddRow("Delta modes", $"input {c.InputDeltaMode}, output {c.OutputDeltaMode}");
             table.AddRow("Largest P + n", c.LargestFrameIndex.ToString(CultureInfo.InvariantCulture));
             if (c.HasTrainingRanges)

@@ -54,28 +54,27 @@ namespace DeltaInterpolator.Cli.Verbs
             Skeleton skeleton = animation.Skeleton;
             MotionClip motion = animation.Motion;
             var joints = new Table().Border(TableBorder.Rounded).Title($"[bold]{Markup.Escape(TerminalText.Safe(Path.GetFileName(path), TerminalText.NameLength))}[/]: {skeleton.JointCount} joints");
+            // One line a joint at 80 columns (a Mixamo rig is 65 joints): the tree by indentation instead of
+            // a parent column, channels as axis orders ("pos XYZ rot ZYX"), the offset as three short numbers.
             joints.AddColumn(new TableColumn("#").RightAligned());
-            joints.AddColumn("Joint");
-            joints.AddColumn("Parent");
-            joints.AddColumn("Channels");
-            joints.AddColumn(new TableColumn("Offset").RightAligned());
+            joints.AddColumn("Joint (+: End Site)");
+            joints.AddColumn(new TableColumn("Channels").NoWrap());
+            joints.AddColumn(new TableColumn("Offset").RightAligned().NoWrap());
             // Depths in one pass (parents come before children), so a deep file costs time in proportion to it.
             var depths = new int[skeleton.JointCount];
             for (int j = 1; j < skeleton.JointCount; j++) depths[j] = depths[skeleton.Parents[j]] + 1;
             int shown = Math.Min(skeleton.JointCount, MaxJointRows);
             for (int j = 0; j < shown; j++)
             {
-                int parent = skeleton.Parents[j];
-                // Indentation shows the tree up to a few levels; deeper joints say their depth instead of
-                // widening the table (a file nested 5,000 deep once made a 10,000-column table).
-                string depth = depths[j] <= MaxIndentedDepth ? new string(' ', 2 * depths[j]) : new string(' ', 2 * MaxIndentedDepth) + "(depth " + depths[j].ToString(CultureInfo.InvariantCulture) + ") ";
-                string offset = string.Format(CultureInfo.InvariantCulture, "{0,10:0.000} {1,10:0.000} {2,10:0.000}", skeleton.Offsets[3 * j], skeleton.Offsets[3 * j + 1], skeleton.Offsets[3 * j + 2]);
-                string endSites = animation.EndSites[j].Length > 0 ? " (+End Site)" : "";
+                // Indentation (one space a level) shows the tree up to a few levels; deeper joints say their
+                // depth instead of widening the table (a file nested 5,000 deep once made a 10,000-column table).
+                string depth = depths[j] <= MaxIndentedDepth ? new string(' ', depths[j]) : new string(' ', MaxIndentedDepth) + "(depth " + depths[j].ToString(CultureInfo.InvariantCulture) + ") ";
+                string offset = string.Format(CultureInfo.InvariantCulture, "{0:0.###} {1:0.###} {2:0.###}", skeleton.Offsets[3 * j], skeleton.Offsets[3 * j + 1], skeleton.Offsets[3 * j + 2]);
+                string endSites = animation.EndSites[j].Length > 0 ? " +" : "";
                 joints.AddRow(
                     j.ToString(CultureInfo.InvariantCulture),
                     Markup.Escape(depth + TerminalText.Safe(skeleton.Names[j], TerminalText.NameLength) + endSites),
-                    parent < 0 ? "-" : Markup.Escape(TerminalText.Safe(skeleton.Names[parent], TerminalText.NameLength)),
-                    Markup.Escape(BvhChannels.Describe(animation.JointChannels[j])),
+                    Markup.Escape(CompactChannels(animation.JointChannels[j])),
                     offset);
             }
 
@@ -96,6 +95,31 @@ namespace DeltaInterpolator.Cli.Verbs
             summary.AddRow("Read speed", string.Format(CultureInfo.InvariantCulture, "{0:0} MB/s ({1:0.0} ms; first read with JIT start-up {2:0.0} ms)", bytes / 1e6 / best, best * 1e3, firstSeconds * 1e3));
             AnsiConsole.Write(summary);
             return 0;
+        }
+
+        /// <summary>
+        /// Channels in a few characters: "pos XYZ rot ZYX" for the usual six (each group in file order), the
+        /// full names when positions and rotations interleave, "-" for none.
+        /// </summary>
+        internal static string CompactChannels(BvhChannel[] channels)
+        {
+            if (channels.Length == 0) return "-";
+            var text = new System.Text.StringBuilder();
+            bool? rotation = null;
+            foreach (BvhChannel c in channels)
+            {
+                if (rotation != c.IsRotation())
+                {
+                    if (rotation == true) return BvhChannels.Describe(channels); // rotations then positions again: say it in full
+                    if (text.Length > 0) text.Append(' ');
+                    text.Append(c.IsRotation() ? "rot " : "pos ");
+                    rotation = c.IsRotation();
+                }
+
+                text.Append("XYZ"[c.Axis()]);
+            }
+
+            return text.ToString();
         }
 
         /// <summary>Joints listed in the table; a file with more says how many were left out.</summary>

@@ -6,6 +6,7 @@ using System.IO;
 using System.Linq;
 using DeltaInterpolator.Cli.Presenters;
 using DeltaInterpolator.Core.IO;
+using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Preview;
 using Spectre.Console;
 
@@ -46,8 +47,14 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<string?> _frames = new Option<string?>("--frames")
         {
-            Description = "Show only frames START-END of the files (inclusive, frame indices of the files); the preview counts from START as 0.",
+            Description = "Show only frames START-END of the files (inclusive, frame indices of the files); frames are labelled with the files' numbers, like --keys.",
             HelpName = "START-END",
+        };
+
+        private readonly Option<string?> _map = new Option<string?>("--map")
+        {
+            Description = "A JSON joint map of the files' rig, the format 'inbetween retarget --map' reads ({\"LeftHand\": \"l_wrist\", ...}): the trails follow the joints it gives the model's LeftHand, RightHand, LeftFoot and RightFoot (others by built-in names).",
+            HelpName = "MAP.json",
         };
 
         private readonly Option<string> _out = new Option<string>("--out")
@@ -82,6 +89,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_tracks);
             command.Options.Add(_keys);
             command.Options.Add(_frames);
+            command.Options.Add(_map);
             command.Options.Add(_out);
             command.Options.Add(_png);
             _output.AddTo(command);
@@ -128,7 +136,11 @@ namespace DeltaInterpolator.Cli.Verbs
             (int Start, int End)? range = FrameRangeArgument.Parse(parse.GetValue(_frames));
             int[] keys = ParseKeys(parse.GetValue(_keys));
             bool force = parse.GetValue(_output.Force);
-            string[] inputs = requests.Select(r => r.Path).ToArray();
+            string? mapPath = parse.GetValue(_map);
+            if (mapPath != null) InputFile.Check(mapPath, "a JSON joint map");
+            // A key list file (--keys @FILE) and a joint map are inputs too: no output replaces them, --force or not.
+            string? keyFile = parse.GetValue(_keys) is string keysText ? KeyListArgument.FilePath(keysText) : null;
+            string[] inputs = requests.Select(r => r.Path).Append(mapPath).Append(keyFile).Where(p => p != null).Select(p => p!).ToArray();
             string htmlPath = parse.GetValue(_out)!;
             OutputFile.Check(htmlPath, force, inputs);
             string? pngPath = parse.GetValue(_png);
@@ -138,7 +150,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 ContactSheet.CheckOutputs(pngPath, force, new[] { htmlPath }, inputs);
             }
 
-            PreviewScene scene = BvhPreview.Build(requests, range, keys, truth != null);
+            JointMap? map = mapPath == null ? null : JointMap.Load(mapPath);
+            PreviewScene scene = BvhPreview.Build(requests, range, keys, truth != null, map);
             PreviewWriter.WriteHtml(scene, htmlPath);
             PreviewSummary.Page(scene, htmlPath);
             if (pngPath != null)

@@ -28,7 +28,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Argument<string> _input = new Argument<string>("IN")
         {
-            Description = "The BVH file to retarget (any humanoid: LaFAN1, CMU, Mixamo or Unity names, or --map)",
+            Description = "The BVH file to retarget (any humanoid: " + BuiltInMapNames.List + " joint names, or --map)",
         };
 
         private readonly Option<string> _to = new Option<string>("--to")
@@ -47,7 +47,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
         private readonly Option<string?> _map = new Option<string?>("--map")
         {
-            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\", \"of\", \"joints\"], …} for names the built-in maps (LaFAN1, CMU, Mixamo, Unity HumanBodyBones, Poser, 3ds Max Biped Bip01_*) miss",
+            Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\", \"of\", \"joints\"], …} for names the built-in maps (" + BuiltInMapNames.List + ") miss; joints it leaves out take the built-in names, null: a joint the rig lacks, made up (Documentation~/retargeting.md)",
             HelpName = "MAP.json",
         };
 
@@ -105,7 +105,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 "retarget",
                 "Move motion onto the model's skeleton (or another BVH file's), matching every mapped bone's world direction,\n" +
                 "scaling the root by leg length and resampling to the model's frame rate.\n" +
-                "Joints are matched by name (built-in LaFAN1, CMU, Mixamo and Unity HumanBodyBones tables, or --map);\n" +
+                "Joints are matched by name (built-in " + BuiltInMapNames.List + " tables, or --map;\n" +
+                "Documentation~/retargeting.md has the model's 22 joints, the map format and what each refusal means);\n" +
                 "a skeleton missing joints the model needs is refused with their names (exit status 2).\n" +
                 "Example:\n  inbetween retarget Samples~/Demo/cmu_09_12_walk_navigate.bvh --to model --reference-frame 0 --from-frame 1 --out out/walk_on_model.bvh");
             command.Arguments.Add(_input);

@@ -98,12 +98,33 @@ namespace DeltaInterpolator.Cli.Verbs
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
             foreach (string m in models) Core.IO.InputFile.Check(m, "an exported model (NAME.onnx)");
             string[] only = parse.GetValue(_only) ?? Array.Empty<string>();
+            foreach (string glob in only)
+            {
+                // Python's fnmatch reads a reversed range as empty (it matches nothing): on the command line that is
+                // a typing slip, said now rather than as "no files".
+                string? reversed = FileGlob.Parse(glob).ReversedRange;
+                if (reversed != null) throw new CliErrors.UsageException($"inbetween score: --only '{glob}' has the reversed range {reversed}, which matches nothing; expected a range from low to high, e.g. [a-z]");
+            }
+
             string? jsonPath = parse.GetValue(_json);
             var entries = new List<DataManifest.Entry>();
-            foreach (string d in data) entries.AddRange(DataManifest.Open(d).Entries(only));
-            if (entries.Count == 0) throw new CliErrors.UsageException($"{string.Join(", ", data)}: no BVH files to score; expected *.bvh files (check --only)");
             var inputs = new List<string?>(models);
-            foreach (DataManifest.Entry e in entries) inputs.Add(e.FilePath);
+            foreach (string d in data)
+            {
+                DataManifest manifest = DataManifest.Open(d);
+                entries.AddRange(manifest.Entries(only));
+                // Settings files are inputs as much as the motion: the manifest (NAME.json or DIR/inbetween-data.json),
+                // and a folder's manifest name even when it has none yet (a report written there would become one).
+                inputs.Add(manifest.Path ?? Path.Combine(manifest.Folder, DataManifest.FileName));
+            }
+
+            if (entries.Count == 0) throw new CliErrors.UsageException($"{string.Join(", ", data)}: no BVH files to score; expected *.bvh files (check --only)");
+            foreach (DataManifest.Entry e in entries)
+            {
+                inputs.Add(e.FilePath);
+                inputs.Add(e.Map);
+            }
+
             string? jsonFull = jsonPath == null ? null : OutputFile.Check(jsonPath, parse.GetValue(_output.Force), inputs.ToArray());
 
             var inbetweeners = new List<Inbetweener>();

@@ -5,6 +5,10 @@
   var data = JSON.parse(document.getElementById('preview-data').textContent);
   var J = data.joints.length, N = data.frames, q = data.quantum, H = data.height, floorY = data.floor;
   var keys = data.keys, keySet = new Set(keys);
+  // Labels are the file's frame numbers (a preview of --frames 200-299 shows 200..299); indices stay 0-based.
+  var first = data.firstFrame || 0, body = data.bodyRoot || 0;
+  var drawsBone = data.drawsBone || data.parents.map(function (p) { return p >= 0 ? 1 : 0; });
+  var cmPerUnit = data.cmPerUnit || 0;
   var SVG = 'http://www.w3.org/2000/svg';
 
   // Positions arrive as integer changes from the previous frame; sum them back up once.
@@ -32,7 +36,10 @@
     frameCount: N,
     fps: data.fps,
     keys: keys.slice(),
+    firstFrame: first,
     setFrame: function (k) { setFrame(k); },
+    // Screen position [x, y, depth] of joint j of track t at the current frame (null: behind the camera).
+    screenOf: function (t, j) { updateView(); var p = jointAt(tracks[t], state.frame, j); return project(p[0], p[1], p[2]); },
     // The foot joints of track `t` planted at the current frame (drawn as footprints on the floor).
     plantedAt: function (t) { return plantedJoints(tracks[t], state.frame); },
     play: function () { setPlaying(true); },
@@ -46,7 +53,7 @@
   var frameText = document.getElementById('frame'), timeText = document.getElementById('time');
   var badge = document.getElementById('badge');
   scrub.max = String(N - 1);
-  document.getElementById('frames').textContent = ' / ' + (N - 1);
+  document.getElementById('frames').textContent = ' / ' + (first + N - 1);
   var legend = document.getElementById('legend');
   tracks.forEach(function (t) {
     var chip = document.createElement('span');
@@ -56,26 +63,30 @@
     chip.appendChild(dot);
     chip.appendChild(document.createTextNode(t.name));
     if (t.index === data.groundTruth) {
-      chip.appendChild(small(' ground truth'));
+      // "Ground truth ground truth" reads as a stutter: say it only when the name does not.
+      if (!/ground[ -]?truth/i.test(t.name)) chip.appendChild(small(' ground truth'));
     } else if (t.meanError !== undefined) {
-      chip.appendChild(small(' mean error ' + fmt(t.meanError) + (keys.length ? ' between keys' : '')));
+      chip.appendChild(small(' mean error ' + distance(t.meanError) + (keys.length ? ' per joint between keys' : ' per joint')));
     }
     legend.appendChild(chip);
-    if (t.planted && !legend.dataset.planted) {
-      legend.dataset.planted = '1';
-      legend.appendChild(small('ellipses on the floor: planted feet (within 3 % of a leg length of the ground, slower than 15 % of a leg length per second)'));
-    }
   });
+  // The footprint note after every track's chip, not between two of them.
+  if (tracks.some(function (t) { return t.planted; })) {
+    legend.dataset.planted = '1';
+    legend.appendChild(small('ellipses on the floor: planted feet (within 3 % of a leg length of the ground, slower than 15 % of a leg length per second)'));
+  }
   var km = document.getElementById('keymarks');
   keys.forEach(function (k) {
     var b = document.createElement('b');
     b.style.left = (N > 1 ? 100 * k / (N - 1) : 0) + '%';
-    b.title = 'key frame ' + k;
+    b.title = 'key frame ' + (first + k);
     km.appendChild(b);
   });
 
   function small(text) { var s = document.createElement('small'); s.textContent = text; return s; }
   function fmt(x) { return x >= 100 ? x.toFixed(0) : x >= 10 ? x.toFixed(1) : x >= 1 ? x.toFixed(2) : x.toPrecision(2); }
+  // A distance in data units with its unit: centimetres when the skeleton told the unit.
+  function distance(x) { return cmPerUnit ? fmt(x * cmPerUnit) + ' cm' : fmt(x) + ' data units'; }
 
   // ---- camera: spherical orbit around a target -------------------------------------------------
   var FOV = 32 * Math.PI / 180;
@@ -83,18 +94,20 @@
   function center(frame) {
     var x = 0, z = 0;
     tracks.forEach(function (t) {
-      var i = Math.min(frame, t.frames - 1) * J * 3;
+      var i = (Math.min(frame, t.frames - 1) * J + body) * 3;
       x += t.pos[i] + t.offset[0]; z += t.pos[i + 2] + t.offset[2];
     });
     return [x / tracks.length, floorY + 0.45 * H, z / tracks.length];
   }
   function resetCamera() {
-    // Three-quarter view from the side the motion heads to, far enough to frame the whole row.
+    // From the side the motion heads to, square to the row of tracks (which stand apart across the
+    // travel), so every figure is as far from the camera as the others and none looks bigger; far
+    // enough to frame the whole row.
     var tr = data.travel, yaw0 = Math.atan2(tr[0], tr[2]);
     var o0 = tracks[0].offset, o1 = tracks[tracks.length - 1].offset;
     var width = Math.hypot(o1[0] - o0[0], o1[2] - o0[2]) + 1.2 * H;
     var aspect = Math.max(0.5, view.w / Math.max(1, view.h)), tan = Math.tan(FOV / 2);
-    cam.yaw = yaw0 + 0.3;
+    cam.yaw = yaw0;
     cam.pitch = 0.3;
     cam.dist = Math.max(2.2 * H / (2 * tan), 1.3 * width / (2 * tan * aspect));
     cam.target = center(state.frame);
@@ -189,7 +202,7 @@
       ctx.strokeStyle = 'rgba(0,0,0,0.35)';
       for (j = 1; j < J; j++) {
         var a = shadow[j], b = shadow[data.parents[j]];
-        if (!a || !b) continue;
+        if (!a || !b || !drawsBone[j]) continue;
         ctx.lineWidth = boneWidth * view.f / ((a[2] + b[2]) / 2);
         ctx.beginPath(); ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.stroke();
       }
@@ -203,10 +216,11 @@
       });
       for (j = 1; j < J; j++) {
         var p0 = pts[j], p1 = pts[data.parents[j]];
-        if (p0 && p1) items.push({ kind: 0, a: p1, b: p0, depth: (p0[2] + p1[2]) / 2, t: t });
+        if (p0 && p1 && drawsBone[j]) items.push({ kind: 0, a: p1, b: p0, depth: (p0[2] + p1[2]) / 2, t: t });
       }
       for (j = 0; j < J; j++) {
-        if (pts[j]) items.push({ kind: 1, a: pts[j], depth: pts[j][2] - 1e-4 * H, t: t, head: heads.indexOf(j) >= 0 });
+        // Joints above the body root (a root node at the origin) are not drawn at all.
+        if (pts[j] && (j === body || drawsBone[j])) items.push({ kind: 1, a: pts[j], depth: pts[j][2] - 1e-4 * H, t: t, head: heads.indexOf(j) >= 0 });
       }
       t.labelAt = labelPoint(t, frame);
     });
@@ -235,7 +249,7 @@
       var p = t.labelAt;
       if (!p) return;
       var text = t.name;
-      if (t.errors) text += '  ' + fmt(t.errors[Math.min(frame, t.errors.length - 1)]);
+      if (t.errors) text += '  ' + distance(t.errors[Math.min(frame, t.errors.length - 1)]);
       ctx.fillStyle = 'rgba(21,24,28,0.75)';
       var w = ctx.measureText(text).width + 12;
       ctx.fillRect(p[0] - w / 2, p[1] - 17, w, 20);
@@ -246,7 +260,7 @@
   }
 
   function labelPoint(t, frame) {
-    var top = -Infinity, root = jointAt(t, frame, 0);
+    var top = -Infinity, root = jointAt(t, frame, body);
     for (var j = 0; j < J; j++) top = Math.max(top, jointAt(t, frame, j)[1]);
     return project(root[0], top + 0.18 * H, root[2]);
   }
@@ -256,7 +270,7 @@
   var withErrors = tracks.filter(function (t) { return t.errors; });
   if (withErrors.length) {
     document.getElementById('errors').hidden = false;
-    document.getElementById('truth-name').textContent = tracks[data.groundTruth].name + ' (data units)';
+    document.getElementById('truth-name').textContent = tracks[data.groundTruth].name + (cmPerUnit ? ' (cm)' : ' (data units)');
   }
   function el(name, attrs, parent) {
     var e = document.createElementNS(SVG, name);
@@ -271,12 +285,14 @@
     while (plot.firstChild) plot.removeChild(plot.firstChild);
     plot.setAttribute('viewBox', '0 0 ' + w + ' ' + h);
     var left = 48, right = 12, top = 10, bottom = 24;
-    var max = 0;
-    withErrors.forEach(function (t) { t.errors.forEach(function (e) { if (e > max) max = e; }); });
+    // Plotted in the unit the header names: centimetres when known, else data units.
+    var unit = cmPerUnit || 1, max = 0;
+    withErrors.forEach(function (t) { t.errors.forEach(function (e) { if (e * unit > max) max = e * unit; }); });
     var step = niceStep(Math.max(max, 1e-9) / 4), ymax = Math.ceil(max / step) * step || step;
     var decimals = Math.max(0, Math.min(6, -Math.floor(Math.log10(step))));
     var X = function (f) { return left + (N > 1 ? f / (N - 1) : 0) * (w - left - right); };
     var Y = function (e) { return h - bottom - e / ymax * (h - top - bottom); };
+    var Ye = function (e) { return Y(e * unit); };
     plotGeom = { X: X, left: left, right: right, w: w };
     for (var v = 0; v <= ymax + step / 2; v += step) {
       el('line', { x1: left, x2: w - right, y1: Y(v), y2: Y(v), stroke: '#2c333b' }, plot);
@@ -284,9 +300,10 @@
     }
     keys.forEach(function (k) { el('line', { x1: X(k), x2: X(k), y1: top, y2: h - bottom, stroke: '#ffc933', 'stroke-opacity': 0.35 }, plot); });
     var fstep = niceStep(Math.max(1, (N - 1) / 8));
-    for (var f = 0; f < N; f += fstep) el('text', { x: X(f), y: h - 7, 'text-anchor': 'middle' }, plot).textContent = String(f);
+    // Ticks on round file frame numbers (frame index + first).
+    for (var f = Math.ceil(first / fstep) * fstep - first; f < N; f += fstep) el('text', { x: X(f), y: h - 7, 'text-anchor': 'middle' }, plot).textContent = String(first + f);
     withErrors.forEach(function (t) {
-      var pts = t.errors.map(function (e, i) { return X(i).toFixed(1) + ',' + Y(e).toFixed(1); }).join(' ');
+      var pts = t.errors.map(function (e, i) { return X(i).toFixed(1) + ',' + Ye(e).toFixed(1); }).join(' ');
       el('polyline', { points: pts, fill: 'none', stroke: t.color, 'stroke-width': 1.6, 'stroke-linejoin': 'round' }, plot);
     });
     cursor = el('line', { y1: top, y2: h - bottom, stroke: '#dfe4ea', 'stroke-width': 1 }, plot);
@@ -315,8 +332,8 @@
     k = Math.max(0, Math.min(N - 1, Math.round(Number(k) || 0)));
     state.frame = k;
     scrub.value = String(k);
-    frameText.textContent = String(k);
-    timeText.textContent = (k / data.fps).toFixed(2) + ' s';
+    frameText.textContent = String(first + k);
+    timeText.textContent = ((first + k) / data.fps).toFixed(2) + ' s';
     if (state.follow) cam.target = center(k);
     moveCursor();
     dirty = true;
@@ -373,9 +390,9 @@
   }
   resize();
   resetCamera();
-  // A link may name a frame to open on, paused: file.html#frame=45.
+  // A link may name a frame to open on, paused: file.html#frame=45 (the file's frame number, as shown).
   var start = /frame=(\d+)/.exec(location.hash);
-  setFrame(start ? Number(start[1]) : 0);
+  setFrame(start ? Number(start[1]) - first : 0);
   if (start) setPlaying(false);
   requestAnimationFrame(tick);
 })();

@@ -76,6 +76,40 @@ namespace DeltaInterpolator.Tests.Cli
         }
 
         [Test]
+        public void AModelWhoseContactOutputHasTheWrongShapeIsRefusedInOneLine()
+        {
+            // The contact fixture with its head's Sigmoid turned into a Flatten (same length): foot_contacts [B, N·4].
+            byte[] bytes = File.ReadAllBytes(Path.Combine(Root, "Tests", "Fixtures~", "tiny-model-contacts.onnx"));
+            byte[] from = System.Text.Encoding.ASCII.GetBytes("Sigmoid"), to = System.Text.Encoding.ASCII.GetBytes("Flatten");
+            int count = 0;
+            for (int at = bytes.AsSpan().IndexOf(from); at >= 0; at = bytes.AsSpan().IndexOf(from), count++) to.CopyTo(bytes, at);
+            Assert.That(count, Is.GreaterThan(0), "the contact head's Sigmoid (node name and operator)");
+            string model = Path.Combine(_dir, "flat.onnx");
+            File.WriteAllBytes(model, bytes);
+            CliRun run = CliHarness.Run("bake", Sample, "--every", "60", "--model", model, "--out", Path.Combine(_dir, "o.bvh"));
+            CliHarness.AssertOneErrorLine(run, "foot_contacts");
+            Assert.That(File.Exists(Path.Combine(_dir, "o.bvh")), Is.False, "nothing written");
+        }
+
+        [Test]
+        public void AModelWithContactsLocksWithThemAndSaysSo()
+        {
+            string json = Path.Combine(_dir, "contacts.json");
+            CliRun run = CliHarness.Run("bake", Sample, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--model", Path.Combine(Root, "Tests", "Fixtures~", "tiny-model-contacts.onnx"),
+                "--out", Path.Combine(_dir, "c.bvh"), "--json", json, "--preview", Path.Combine(_dir, "c.html"));
+            CliHarness.AssertSuccess(run);
+            using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(json));
+            Assert.That(doc.RootElement.GetProperty("model_contacts").GetString(), Is.EqualTo("predicted"));
+            Assert.That(run.Stdout.Replace("\n", " ").Replace("  ", " "), Does.Contain("the model's footprints are the contacts it predicted"), "the preview marks the predicted contacts");
+            CliRun plain = CliHarness.Run("bake", Sample, "--every", "60", "--from-frame", "1", "--reference-frame", "0", "--model", Path.Combine(Root, "Tests", "Fixtures~", "tiny-model.onnx"),
+                "--out", Path.Combine(_dir, "p.bvh"), "--json", Path.Combine(_dir, "p.json"), "--preview", Path.Combine(_dir, "p.html"));
+            CliHarness.AssertSuccess(plain);
+            using JsonDocument plainDoc = JsonDocument.Parse(File.ReadAllText(Path.Combine(_dir, "p.json")));
+            Assert.That(plainDoc.RootElement.GetProperty("model_contacts").GetString(), Is.EqualTo("labelled"));
+            Assert.That(plain.Stdout.Replace("\n", " ").Replace("  ", " "), Does.Not.Contain("contacts it predicted"));
+        }
+
+        [Test]
         public void AnythingButLockOrOffIsRefused()
         {
             CliHarness.AssertOneErrorLine(CliHarness.Run("bake", Sample, "--every", "60", "--out", Path.Combine(_dir, "o.bvh"), "--feet", "on"), "lock or off");

@@ -60,6 +60,106 @@ namespace DeltaInterpolator.Tests.Preview
             await CheckPlayer(chromium, html, scene, 77);
         }
 
+        /// <summary>
+        /// Issue 30's layout: on a 1280×800 screen the whole page — 3D view, controls and the error plot —
+        /// is in view (a screenshot of the viewport holds the plot's curves: it fails when the plot falls
+        /// below the fold, as it did with a 62vh stage and a 170 px plot); the figures stand side by side,
+        /// each as far from the camera as the others (not on a diagonal where one looks bigger); the legend
+        /// names the ground truth once and gives errors with their unit.
+        /// </summary>
+        [Test]
+        public async Task PlayerFitsA1280By800ScreenWithFiguresSideBySide()
+        {
+            string chromium = RequireChromium();
+            MotionClip truth = PreviewMotion.Walker(120);
+            int[] keys = PreviewMotion.KeysEvery(120, 20);
+            PreviewScene scene = PreviewScene.FromClips(
+                "synthetic walker",
+                new[] { ("Ground truth", truth), ("SLERP", PreviewMotion.SlerpBaked(truth, keys)), ("Model", PreviewMotion.Wobbled(PreviewMotion.SlerpBaked(truth, keys), 6)) },
+                keys,
+                0);
+            // Planted feet marked, as a bake's preview has them: the legend then carries its note too.
+            int[] feet = { truth.Skeleton.JointCount - 1, truth.Skeleton.JointCount - 4 };
+            foreach (PreviewTrack track in scene.Tracks) track.MarkPlantedFeet(feet, new bool[track.FrameCount * feet.Length]);
+            string html = Path.Combine(_folder, "layout.html");
+            PreviewWriter.WriteHtml(scene, html);
+            (IPlaywright playwright, IBrowser browser) = await Chromium.LaunchAsync(chromium);
+            try
+            {
+                // A 1280×800 screen, and the page a browser window on it shows (tabs and address bar take ~100 px).
+                foreach (int height in new[] { 700, 800 })
+                {
+                    await CheckLayout(browser, html, scene, height);
+                }
+            }
+            finally
+            {
+                await browser.CloseAsync();
+                playwright.Dispose();
+            }
+        }
+
+        private async Task CheckLayout(IBrowser browser, string html, PreviewScene scene, int viewportHeight)
+        {
+            {
+                IPage page = await browser.NewPageAsync(new BrowserNewPageOptions { ViewportSize = new ViewportSize { Width = 1280, Height = viewportHeight } });
+                List<string> problems = Watch(page, out _);
+                await page.GotoAsync(new Uri(html).AbsoluteUri + "#frame=0");
+                await page.WaitForFunctionAsync("window.preview !== undefined");
+                await page.WaitForTimeoutAsync(200);
+
+                double[] plot = await page.EvaluateAsync<double[]>("(() => { const r = document.getElementById('plot').getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()");
+                Assert.That(plot[3], Is.LessThanOrEqualTo(viewportHeight), $"the error plot's bottom is within the {viewportHeight} px viewport");
+                Assert.That(plot[3] - plot[1], Is.GreaterThanOrEqualTo(100), "the plot keeps a readable height");
+                Assert.That(await page.EvaluateAsync<double>("document.documentElement.scrollHeight"), Is.LessThanOrEqualTo(viewportHeight), "nothing to scroll to");
+
+                // The screenshot shows what a person sees: the viewport only. The curves of SLERP and the
+                // model must be in it, inside the plot's box.
+                PngImage shot = PngImage.Decode(await page.ScreenshotAsync());
+                Assert.That(shot.Height, Is.EqualTo(viewportHeight));
+                for (int t = 1; t < scene.Tracks.Count; t++)
+                {
+                    int inPlot = CountNearIn(shot, TrackColors.Of(scene, t), 40, (int)plot[0], (int)plot[1], (int)plot[2], (int)Math.Min(plot[3], shot.Height));
+                    Assert.That(inPlot, Is.GreaterThan(40), $"{scene.Tracks[t].Name}'s error curve is visible on screen");
+                }
+
+                // Frame 0 is a key: every track has the same pose, so equal depths mean a square-on row.
+                double[][] roots = new double[scene.Tracks.Count][];
+                for (int t = 0; t < roots.Length; t++) roots[t] = await page.EvaluateAsync<double[]>($"window.preview.screenOf({t}, {scene.BodyRoot})");
+                for (int t = 1; t < roots.Length; t++)
+                {
+                    Assert.That(roots[t][2], Is.EqualTo(roots[0][2]).Within(0.01 * roots[0][2]), $"track {t} stands as far from the camera as track 0");
+                    Assert.That(roots[t][1], Is.EqualTo(roots[0][1]).Within(2), $"track {t} stands on the same screen line");
+                    Assert.That(Math.Abs(roots[t][0] - roots[t - 1][0]), Is.GreaterThan(60), $"tracks {t - 1} and {t} stand apart");
+                }
+
+                string legend = (await page.Locator("#legend").TextContentAsync())!;
+                Assert.That(legend, Does.Not.Match("(?i)ground truth\\s*ground truth"));
+                Assert.That(legend, Does.Contain("Ground truth"));
+                Assert.That(legend, Does.Match("SLERP mean error [0-9.]+ cm per joint between keys"));
+                Assert.That(await page.Locator("#truth-name").TextContentAsync(), Does.EndWith("(cm)"));
+                Assert.That(problems, Is.Empty);
+                await page.ScreenshotAsync(new PageScreenshotOptions { Path = Path.Combine(_folder, $"layout-1280x{viewportHeight}.png") });
+                await page.CloseAsync();
+            }
+        }
+
+        private static int CountNearIn(PngImage image, string hex, int tolerance, int left, int top, int right, int bottom)
+        {
+            int r = Convert.ToInt32(hex.Substring(1, 2), 16), g = Convert.ToInt32(hex.Substring(3, 2), 16), b = Convert.ToInt32(hex.Substring(5, 2), 16);
+            int count = 0;
+            for (int y = Math.Max(0, top); y < Math.Min(image.Height, bottom); y++)
+            {
+                for (int x = Math.Max(0, left); x < Math.Min(image.Width, right); x++)
+                {
+                    int p = 3 * (y * image.Width + x);
+                    if (Math.Abs(image.Rgb[p] - r) <= tolerance && Math.Abs(image.Rgb[p + 1] - g) <= tolerance && Math.Abs(image.Rgb[p + 2] - b) <= tolerance) count++;
+                }
+            }
+
+            return count;
+        }
+
         [Test]
         public async Task PlantedFeetAreMarkedOnTheFramesTheFlagsSay()
         {

@@ -18,8 +18,10 @@ using System.Text.RegularExpressions;
 //            exists as an AddComponentMenu/CreateAssetMenu/MenuItem attribute (or, for Add Component, as
 //            the nicified name of a MonoBehaviour);
 //   package  package.json's documentationUrl/changelogUrl/licensesUrl are absolute http(s) links or absent;
-//   friends  [InternalsVisibleTo] of a package assembly names only test assemblies and Editor-only ones
-//            (assemblies.json, written by unity_compile.py beside the assemblies, says which is which).
+//   friends  [InternalsVisibleTo] of DeltaInterpolator.Core names only test assemblies (what the Editor-only
+//            assemblies and the tools use of Core is its public API); of another package assembly, only test
+//            assemblies and Editor-only ones (assemblies.json, written by unity_compile.py beside the
+//            assemblies, says which is which).
 // Usage: DeltaInterpolator.UnityRules ASSEMBLY_DIR STUB_DIR PACKAGE_ROOT [DOC.md ...]
 // Prints one line per violation; exit 1 when there is any.
 static class Program
@@ -292,6 +294,8 @@ static class Program
     }
 
     // ---- friends -------------------------------------------------------------------------------------
+    const string CoreAssembly = "DeltaInterpolator.Core";
+
     static void CheckFriends(List<Assembly> package, string dir)
     {
         var path = Path.Combine(dir, "assemblies.json");
@@ -301,9 +305,18 @@ static class Program
             foreach (var attr in a.CustomAttributes.Where(c => c.AttributeType.FullName == "System.Runtime.CompilerServices.InternalsVisibleToAttribute"))
             {
                 var friend = ((string)attr.ConstructorArguments[0].Value!).Split(',')[0].Trim();
-                bool ok = doc.RootElement.TryGetProperty(friend, out var info)
-                          && (info.GetProperty("test").GetBoolean() || info.GetProperty("editorOnly").GetBoolean());
-                if (!ok) Violations.Add($"friends: {a.GetName().Name} gives its internals to {friend}, which is neither a test assembly nor an Editor-only assembly of this configuration");
+                bool known = doc.RootElement.TryGetProperty(friend, out var info);
+                bool test = known && info.GetProperty("test").GetBoolean();
+                bool editorOnly = known && info.GetProperty("editorOnly").GetBoolean();
+                if (a.GetName().Name == CoreAssembly)
+                {
+                    // Core is the engine-free library every other assembly builds on: its internals are for its tests.
+                    if (!test) Violations.Add($"friends: {CoreAssembly} gives its internals to {friend}, which is not a test assembly of this configuration; make what it uses public (with XML docs) or move it into Core");
+                }
+                else if (!test && !editorOnly)
+                {
+                    Violations.Add($"friends: {a.GetName().Name} gives its internals to {friend}, which is neither a test assembly nor an Editor-only assembly of this configuration");
+                }
             }
     }
 

@@ -17,7 +17,6 @@ localize at the last past key → key features → network → `decode_outputs` 
 """
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Dict, List, Optional, Sequence, Tuple
@@ -32,6 +31,9 @@ from .data import TEST_SUBJECTS, windows
 from .facing import yaw_toward
 from .kinematics import forward_kinematics
 from .localize import unlocalize
+from .objective import make_batch, predict
+from .lafan1_statistics import Statistics, load_statistics
+from .sampler import TransitionSampler
 
 Tensor = torch.Tensor
 
@@ -41,38 +43,6 @@ FACING_FRAME = PAST - 1
 DEFAULT_LENGTHS = (5, 15, 30, 45)
 METRICS = ("l2q", "l2p", "npss")
 METHOD_LABELS = {"zerovel": "Zero-V", "slerp": "Interp. (SLERP)", "model": "Model"}
-
-
-@dataclass
-class Statistics:
-    x_mean: np.ndarray   # (66,) index 3·joint + axis, cm
-    x_std: np.ndarray    # (66,)
-    offsets: np.ndarray  # (J, 3) cm, the root's row is zero
-    path: str
-
-
-def load_statistics(path: str | Path) -> Statistics:
-    path = Path(path)
-    if not path.exists():
-        raise FileNotFoundError(f"{path}: statistics file not found; expected LaFAN1's train_stats_official.json")
-    from .safe_input import check_regular
-    check_regular(path, "LaFAN1's train_stats_official.json")  # a named pipe would block the read
-    try:
-        s = json.loads(path.read_text())
-    except (ValueError, RecursionError) as e:  # not JSON, not UTF-8, nested too deeply: name the file
-        detail = " ".join(str(e).split())[:120] if not isinstance(e, RecursionError) else "nested too deeply"
-        raise ValueError(f"{path}: not JSON ({detail}); expected LaFAN1's train_stats_official.json") from None
-    for key in ("x_mean", "x_std", "offsets"):
-        if not isinstance(s, dict) or key not in s:
-            raise ValueError(f"{path}: missing '{key}'; expected LaFAN1's train_stats_official.json "
-                             "(x_mean, x_std, offsets)")
-    mean = np.asarray(s["x_mean"], dtype=np.float64).reshape(-1)
-    std = np.asarray(s["x_std"], dtype=np.float64).reshape(-1)
-    rest = np.asarray(s["offsets"], dtype=np.float64).reshape(-1, 3)
-    offsets = np.concatenate((np.zeros((1, 3)), rest))
-    if mean.shape != std.shape or mean.size != 3 * len(offsets):
-        raise ValueError(f"{path}: x_mean {mean.shape}, x_std {std.shape} and {len(offsets)} joints disagree")
-    return Statistics(mean, std, offsets, str(path))
 
 
 @dataclass
@@ -214,8 +184,6 @@ def model_predictions(loaded, roots: Tensor, rotations: Tensor, n: int, batch_si
     only the last `past_frames` of the context, see `context_frames`).
 
     Returns world (benchmark-frame) root positions (W, n, 3) cm and local quaternions (W, n, J, 4)."""
-    from .objective import make_batch, predict
-    from .sampler import TransitionSampler
 
     frames = torch.tensor(context_frames(past_frames, n, past_policy))
     past = len(frames) - n - 1

@@ -13,6 +13,7 @@ import numpy as np
 import torch
 
 from . import quaternions
+from .safe_input import check_regular
 from .skeleton import Skeleton
 
 
@@ -38,7 +39,6 @@ _CHANNELS = {"xposition", "yposition", "zposition", "xrotation", "yrotation", "z
 
 
 def read_bvh(path: str | Path, fix_continuity: bool = True) -> Motion:
-    from .safe_input import check_regular
     check_regular(path, "a BVH motion file")  # a named pipe would block the reader, /dev/zero never ends
     try:
         return _read_bvh(path, fix_continuity)

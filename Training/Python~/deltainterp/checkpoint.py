@@ -15,7 +15,9 @@ from typing import Any, Dict, List, Tuple
 
 import numpy as np
 import torch
+from torch import _weights_only_unpickler, serialization
 
+from . import safe_output
 from .model import DeltaInterpolator, ModelConfig
 from .objective import SkeletonTensors
 from .skeleton import Skeleton
@@ -37,6 +39,7 @@ class LoadedModel:
     fps: float = 30.0
     data_description: str = ""
     name: str = ""                 # an exported model's own name (re-export keeps it); "" for a checkpoint
+    contact_threshold: float = 0.5  # a model with a contact head: p ≥ this is planted (chosen on validation)
 
     @property
     def config(self) -> ModelConfig:
@@ -123,7 +126,6 @@ def save_checkpoint_file(state: Dict[str, Any], path: str | Path) -> Path:
     """Writes `state` (model state dict, step, configs, ...) in format version 2: temporary file beside
     `path`, then rename (safe_output). torch.save into a file object names the zip's records `archive/`,
     so the bytes do not depend on the (random) temporary name."""
-    from . import safe_output
     encoded = encode_checkpoint(state)
     return safe_output.write(path, lambda f: torch.save(encoded, f))
 
@@ -143,7 +145,6 @@ class _RestrictedUnpickler(pickle.Unpickler):
 
 
 def _allowed_globals() -> Dict[str, Any]:
-    from torch import _weights_only_unpickler
     return _weights_only_unpickler._get_allowed_globals()
 
 
@@ -198,7 +199,6 @@ def _torch_load(path: Path) -> Any:
 def _restricted_load(path: Path) -> Any:
     """torch 1.13 only: its torch.load ignores `pickle_module` unless weights_only=True (which cannot read a
     float), so call its zip loader directly with the restricted unpickler."""
-    from torch import serialization
     with serialization._open_zipfile_reader(str(path)) as archive:
         return serialization._load(archive, "cpu", _restricted_pickle_module(), encoding="utf-8")
 
@@ -257,11 +257,20 @@ def load_checkpoint(path: str | Path) -> LoadedModel:
     fps, description = float(state.get("fps", 30.0)), str(state.get("data_description", ""))
     if not description:
         fps, description = _describe_training_data(train_config.get("data"), fps)
+    threshold = contact_threshold_of(path, state.get("contact_threshold", 0.5))
     return LoadedModel(model, skeleton, unit_scale, int(state.get("step", 0)),
                        train_config, dict(state.get("validation", {}) or {}),
                        tuple(state.get("facing_local_axis", DEFAULT_FACING_LOCAL_AXIS)),
                        tuple(state.get("facing_target_axis", DEFAULT_FACING_TARGET_AXIS)),
-                       fps, description)
+                       fps, description, contact_threshold=threshold)
+
+
+def contact_threshold_of(path, value) -> float:
+    """A stored contact threshold, or CheckpointError: a number strictly between 0 and 1 (a probability that
+    decides planted frames; 0 or 1 would plant every frame or none)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not (math.isfinite(value) and 0 < value < 1):
+        raise CheckpointError(path, f"contact threshold {str(value)[:40]}", "expected a number between 0 and 1")
+    return float(value)
 
 
 def build_model(path: str | Path, state: Dict[str, Any]) -> DeltaInterpolator:
@@ -299,9 +308,6 @@ def _describe_training_data(pack_path, fps: float) -> Tuple[float, str]:
         return fps, "not recorded (the checkpoint names no training pack)"
     if not Path(pack_path).exists():
         return fps, f"not recorded (its training pack {Path(pack_path).name} is not at hand)"
-    import re
-
-    import numpy as np
     with np.load(pack_path, allow_pickle=False) as z:
         files = [str(f) for f in z["files"]]
         if "description" in z.files and str(z["description"]):

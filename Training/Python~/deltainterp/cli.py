@@ -1,4 +1,5 @@
-"""Command line: python3 -m deltainterp prepare|train|evaluate|export|quantize|fixtures (see --help of each)."""
+"""Command line: python3 -m deltainterp prepare|train|evaluate|export|quantize|fixtures|train-contacts|contacts
+(see --help of each)."""
 from __future__ import annotations
 
 import argparse
@@ -6,11 +7,13 @@ import errno
 import json
 import math
 import os
+import re
 import sys
 from pathlib import Path
 from typing import List, Optional
 
 from . import safe_output
+from .plots import plot_benchmark
 from .terminal_text import LINE_LENGTH, SafeStream, safe
 
 
@@ -68,7 +71,6 @@ def _is_lafan1_folder(args) -> bool:
     folder = Path(args.data[0])
     if not folder.is_dir() or (folder / "inbetween-data.json").exists():
         return False
-    import re
     names = [f.name for f in folder.glob("*.bvh")]
     return bool(names) and all(re.fullmatch(r"[A-Za-z]+\d*_subject\d+\.bvh", n) for n in names)
 
@@ -76,7 +78,6 @@ def _is_lafan1_folder(args) -> bool:
 def _export_name(given, checkpoint: str, exported: str) -> str:
     """The exported model's name: --name, else an exported model's own, else after the run (its folder);
     never a data set's it was not trained on (the default was once DeltaInterpolator-LaFAN1 for any run)."""
-    import re
     if given is not None:
         if not given.strip() or len(given) > 100 or any(ord(c) < 32 or ord(c) == 127 for c in given):
             raise ValueError(f"--name {given[:40]!r}; expected a model name of 1 to 100 printable characters")
@@ -95,7 +96,7 @@ def _run_prepare(args) -> int:
     safe_output.check(args.out, args.force, _named_inputs(args))
     # ... then statistics the user named (the LaFAN1 default is read only by the LaFAN1 path below).
     if args.stats and args.stats != DEFAULT_STATS:
-        from .benchmark import load_statistics
+        from .lafan1_statistics import load_statistics
         load_statistics(args.stats)
     if _is_lafan1_folder(args):
         from .data import prepare
@@ -294,6 +295,129 @@ def _evaluate_export_fixtures(sub) -> None:
                    help="LaFAN1 folder for the skeleton (optional: a built-in copy is used without it)")
 
 
+def _contacts(sub) -> None:
+    p = sub.add_parser(
+        "train-contacts", help="a foot-contact head (contract version 3's foot_contacts) on a model's frozen trunk",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Starts from a model (--init-from: an exported .onnx or a checkpoint), adds a contact head on the "
+                    "query tokens\nafter the last block and trains only it (the trunk is frozen: the motion outputs "
+                    "stay what they were),\nwith the skating measure's contact rule on the ground truth as labels. "
+                    "Resumes from OUT/checkpoint.pt.\nAt the end it chooses the threshold on the validation tails "
+                    "(chained bakes, keys every --every frames)\nand stores it in the checkpoint; `export` writes "
+                    "it into the model's metadata.\n"
+                    "Example:\n  PYTHONPATH=Training/Python~ python3 -m deltainterp train-contacts --data "
+                    "Training/.data/cmu-train.npz \\\n      --init-from Runtime/Models/DeltaInterpolator-CMU.onnx "
+                    "--out Training/runs/cmu-contacts --steps 6000")
+    p.add_argument("--data", required=True, help="the prepared pack (.npz) the model was trained on")
+    p.add_argument("--init-from", required=True, help="the model whose trunk is kept (.onnx or checkpoint.pt)")
+    p.add_argument("--out", required=True, help="run folder (checkpoint.pt, contacts-log.csv, validation.jsonl)")
+    p.add_argument("--head", default="mlp", help="contact head: linear or mlp (default mlp)")
+    p.add_argument("--hidden", type=int, default=128, help="the mlp head's hidden units (default 128)")
+    p.add_argument("--steps", type=int, default=6000, help="training steps (default 6000)")
+    p.add_argument("--batch-size", type=int, default=64, help="transitions per step (default 64)")
+    p.add_argument("--lr", type=float, default=1e-3, help="Adam learning rate (default 1e-3)")
+    p.add_argument("--chained-share", type=float, default=0.5,
+                   help="share of batches whose past frames are the network's own fill (default 0.5)")
+    p.add_argument("--no-mirror", action="store_true", help="no left-right mirrored batches")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--checkpoint-every", type=int, default=250)
+    p.add_argument("--validate-every", type=int, default=0,
+                   help="also choose and log the threshold on validation every N steps (0: only at the end)")
+    p.add_argument("--decay-at", type=float, default=0.8, help="the learning rate drops x0.1 after this share of the steps")
+    p.add_argument("--max-minutes", type=float, default=0.0, help="stop with a checkpoint after M minutes (0: no limit)")
+    p.add_argument("--every", type=int, nargs="+", default=[15, 30],
+                   help="key spacings (model frames) the threshold is chosen for (default 15 30)")
+    p.add_argument("--threads", type=int, default=1, help="torch intra-op threads (default 1)")
+
+    p = sub.add_parser(
+        "contacts", help="precision and recall of a model's predicted foot contacts in bakes",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Bakes clips of a prepared pack gap after gap (keys every --every model frames, each gap's past "
+                    "frames the\nprevious output, as `inbetween bake`) and counts, over every non-key frame and each "
+                    "foot joint\n(LeftFoot, LeftToe, RightFoot, RightToe), the precision and recall of planted frames "
+                    "(p ≥ the model's\nthreshold, or --threshold) against the truth's labels (the skating measure's "
+                    "contact rule).\n--split validation: the last 10 % of each file that is not a time-scaled copy "
+                    "(the training pack's\nvalidation tails); --split all: every file whole (a pack of held-out "
+                    "subjects).\n"
+                    "Example:\n  PYTHONPATH=Training/Python~ python3 -m deltainterp contacts --data "
+                    "Training/.data/cmu-heldout.npz --split all \\\n      --model Runtime/Models/DeltaInterpolator-CMU.onnx "
+                    "--every 15 30")
+    p.add_argument("--data", required=True, help="a prepared pack (.npz) on the model's skeleton")
+    p.add_argument("--model", required=True, help="an exported whole graph (.onnx) or checkpoint.pt with a contact head")
+    p.add_argument("--split", choices=["validation", "all"], default="validation")
+    p.add_argument("--every", type=int, nargs="+", default=[15, 30], help="key spacings in model frames (default 15 30)")
+    p.add_argument("--threshold", type=float, help="planted where p ≥ this (default: the model's own)")
+    p.add_argument("--json", help="also write the counts and scores here")
+    p.add_argument("--force", action="store_true", help="replace an existing --json file")
+    p.add_argument("--same-motion-as", metavar="OTHER.onnx",
+                   help="first print the largest difference between --model's motion outputs (whole, keys and frame "
+                        "graphs) and OTHER's on the same inputs: a contact head on a frozen trunk gives ~0")
+
+
+def _run_contacts(args) -> int:
+    import torch
+    from . import contacts as K
+    torch.set_num_threads(max(1, args.threads) if hasattr(args, "threads") else 1)
+    if args.verb == "train-contacts":
+        if args.threads < 1:
+            raise ValueError(f"--threads {args.threads}; expected ≥ 1")
+        cfg = K.ContactTrainConfig(data=args.data, out=args.out, init_from=args.init_from, head=args.head,
+                                   hidden=args.hidden, steps=args.steps, batch_size=args.batch_size, lr=args.lr,
+                                   chained_share=args.chained_share, mirror=not args.no_mirror, seed=args.seed,
+                                   checkpoint_every=args.checkpoint_every, max_minutes=args.max_minutes,
+                                   validate_every=args.validate_every, decay_at=args.decay_at,
+                                   every=tuple(args.every))
+        print(f"checkpoint: {K.train_contact_head(cfg)}")
+        return 0
+    from .checkpoint import load_checkpoint
+    from .data import load_pack
+    from .warm_start import load_exported_model
+    if any(not 2 <= k <= 200 for k in args.every):
+        raise ValueError(f"--every {args.every}; expected key spacings of 2..200 model frames")
+    if args.threshold is not None and not (math.isfinite(args.threshold) and 0 < args.threshold < 1):
+        raise ValueError(f"--threshold {args.threshold}; expected a number between 0 and 1")
+    if args.json:
+        safe_output.check(args.json, args.force, [args.data, args.model])
+    loaded = load_exported_model(args.model) if args.model.endswith(".onnx") else load_checkpoint(args.model)
+    if not loaded.model.has_contacts:
+        raise ValueError(f"{args.model}: has no foot_contacts output; expected a model with a contact head "
+                         "(`train-contacts`, contract version 3)")
+    if args.same_motion_as:
+        if not (args.model.endswith(".onnx") and args.same_motion_as.endswith(".onnx")):
+            raise ValueError(f"--same-motion-as {args.same_motion_as}: compares two exported models; expected --model "
+                             "and OTHER to be .onnx files")
+        for what, d in K.motion_difference(args.model, args.same_motion_as).items():
+            print(f"  {what}: max |{args.model} - {args.same_motion_as}| = {d:.3g}")
+    pack = load_pack(args.data)
+    if list(pack.skeleton.names) != list(loaded.skeleton.names):
+        raise ValueError(f"{args.data}: its skeleton is not the model's; expected a pack prepared for {args.model}")
+    threshold = loaded.contact_threshold if args.threshold is None else args.threshold
+    thresholds = tuple(sorted(set(K.THRESHOLDS) | {threshold}))
+    from_motion: dict = {}
+    counts = K.contact_scores(loaded, pack, args.every, args.split, thresholds, from_motion)
+    print(f"{args.model} on {args.data} ({args.split}), planted where p >= {threshold}:")
+    for line in K.format_scores(counts, threshold, thresholds):
+        print("  " + line)
+    print("the same rule applied to the baked motion itself (contacts labelled from the filled frames), for comparison:")
+    for line in K.format_scores(from_motion, threshold, thresholds):
+        print("  " + line)
+    if args.json:
+        i = thresholds.index(threshold)
+        report = {"model": args.model, "data": args.data, "split": args.split, "threshold": threshold,
+                  "every": {str(k): {"frames": c.frames, **{j: {"precision": float(c.precision()[i, n]),
+                                                                 "recall": float(c.recall()[i, n]),
+                                                                 "planted": int(c.actual[n])}
+                                                              for n, j in enumerate(K.C.CONTACT_JOINTS)}}
+                            for k, c in counts.items()},
+                  "rule_on_baked_motion": {str(k): {j: {"precision": float(c.precision()[i, n]),
+                                                        "recall": float(c.recall()[i, n])}
+                                                    for n, j in enumerate(K.C.CONTACT_JOINTS)}
+                                           for k, c in from_motion.items()}}
+        safe_output.write_text(args.json, json.dumps(report, indent=2) + "\n")
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _quantize(sub) -> None:
     from .quantize import DEFAULT_MIN_WEIGHTS, FORMS
     p = sub.add_parser(
@@ -461,7 +585,6 @@ def _run_evaluate_export_fixtures(args) -> int:
         print(format_table(report))
         print(f"\nwrote {shown(args.json)}")
         if args.plot:
-            from .plots import plot_benchmark
             print(f"wrote {shown(plot_benchmark(report, args.plot))}")
         return 0
     if args.verb == "export":
@@ -524,6 +647,7 @@ def build_parser() -> argparse.ArgumentParser:
     _train(sub)
     _evaluate_export_fixtures(sub)
     _quantize(sub)
+    _contacts(sub)
     return parser
 
 
@@ -577,6 +701,8 @@ def _main(argv: Optional[List[str]]) -> int:
             return 0
         if args.verb == "quantize":
             return _run_quantize(args)
+        if args.verb in ("train-contacts", "contacts"):
+            return _run_contacts(args)
         return _run_evaluate_export_fixtures(args)
     except ValueError as e:  # CheckpointError, OutputPathError, bad data: `FILE: what; expected`
         _close_progress_bars()

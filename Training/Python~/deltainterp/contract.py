@@ -4,7 +4,7 @@
 """
 from __future__ import annotations
 
-CONTRACT_VERSION = 2  # 2: a batch axis on every graph input and output (1: batch 1)
+CONTRACT_VERSION = 3  # 3: an optional `foot_contacts` output; 2: a batch axis on every graph input and output (1: batch 1)
 
 # Input and output tensor names of the exported graphs.
 KEY_FEATURES = "key_features"
@@ -15,6 +15,10 @@ QUERY_FEATURES = "query_features"  # only with input Δ-mode "none" (ablation)
 KEY_MEMORY = "key_memory"
 ROOT_POSITION_DELTA = "root_position_delta"
 ROTATION_6D_DELTA = "rotation_6d_delta"
+# Version 3, optional: per query frame the probability that each of CONTACT_JOINTS is planted (sigmoid inside the
+# graph), [B, N, 4]; the whole and frame graphs emit it when the model has a contact head, the keys graph never.
+FOOT_CONTACTS = "foot_contacts"
+CONTACT_JOINTS = ("LeftFoot", "LeftToe", "RightFoot", "RightToe")  # channel order (C# FootLocker.ChannelJoints)
 CONSTANT_OUTPUTS = ("contract_version", "joint_count", "key_feature_size")
 
 FEATURES_PER_JOINT = 9  # local 6D rotation (6) then global position (3)

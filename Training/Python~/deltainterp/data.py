@@ -13,8 +13,10 @@ from typing import List, Optional, Tuple
 
 import numpy as np
 
+from . import safe_output
 from .bvh import lafan1_files, read_bvh, subject_of
 from .skeleton import Skeleton, with_offsets
+from .lafan1_statistics import load_statistics
 
 TRAIN_SUBJECTS = (1, 2, 3, 4)
 TEST_SUBJECTS = (5,)
@@ -43,7 +45,6 @@ class MotionPack:
 
 def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN_SUBJECTS,
             progress: bool = True) -> MotionPack:
-    from .benchmark import load_statistics
     statistics = load_statistics(stats) if stats else None  # a bad statistics file fails before any BVH is read
     files = lafan1_files(data_dir, tuple(subjects))
     roots, quats, names = [], [], []
@@ -78,7 +79,6 @@ def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN
 def save_pack(pack: MotionPack, path: str) -> None:
     """Writes the pack to exactly `path` through a temporary file beside it (safe_output; the caller
     checks the path, --force, before reading any BVH)."""
-    from . import safe_output
     _refuse_non_finite(pack)
     safe_output.write(path, lambda f: np.savez_compressed(
         f, skeleton=json.dumps(pack.skeleton.to_json()), files=np.array(pack.files), starts=pack.starts,

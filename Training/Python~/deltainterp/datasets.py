@@ -52,7 +52,8 @@ from .safe_input import check_regular
 from .terminal_text import NAME_LENGTH, safe
 
 MANIFEST_NAME = "inbetween-data.json"
-FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip", "up", "accept_reference_pose"}
+FILE_FIELD_ORDER = ("from_frame", "reference_frame", "fps", "map", "skip", "up", "accept_reference_pose")
+FILE_FIELDS = set(FILE_FIELD_ORDER)
 UP_AXES = ("auto", "y", "z")  # `inbetween --up` and score's manifest reader take the same values
 REPO_ROOT = Path(__file__).resolve().parents[3]  # Training/Python~/deltainterp/datasets.py
 MAX_MANIFEST_BYTES = 1 << 20
@@ -88,57 +89,184 @@ def _fail(path, what: str, expected: str) -> ValueError:
     return ValueError(f"{path}: {what}; {expected}")
 
 
+class _Int(int):
+    """A JSON integer that remembers how the manifest wrote it (refusals quote the file's text)."""
+    text = ""
+
+
+class _Float(float):
+    """A JSON number with a fraction or exponent, and its text (1e400 reads as infinity, 1e-320 as a
+    subnormal: a refusal shows what the file says, as the C# reader does)."""
+    text = ""
+
+
+def _parse_int(text: str) -> _Int:
+    v = _Int(text)
+    v.text = text
+    return v
+
+
+def _parse_float(text: str) -> _Float:
+    v = _Float(text)
+    v.text = text
+    return v
+
+
+class _NonStandardNumber(ValueError):
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.name = name
+
+
+def _refuse_constant(name: str):
+    raise _NonStandardNumber(name)
+
+
+def _json_text(value, limit: int = NAME_LENGTH) -> str:
+    """The value as the manifest wrote it (its JSON text), escaped and clipped as the C# reader shows it
+    (terminal_text.safe, the mirror of TerminalText.Safe)."""
+    return safe(getattr(value, "text", "") or json.dumps(value, separators=(",", ":")), limit)
+
+
+# The rules below are one reader's rules for both languages: `inbetween score` reads manifests with
+# Tools~/Cli/Scoring/DataManifest.cs, which refuses the same values with the same messages;
+# Tests/Fixtures~/manifests holds fixtures both test suites read to the same files, settings and refusals.
+TOP_FIELDS = ("folder", "licence", "defaults", "files", "groups", "comment")
+SETTINGS_EXPECTED = "expected {\"from_frame\": 1, ...}"
+GROUPS_EXPECTED = "expected e.g. \"^(\\\\d+)_\""
+
+
 def _read_manifest(path: Path) -> Dict:
     if not path.is_file():
         raise _fail(path, "is not a regular file", "expected a JSON data manifest")
     if path.stat().st_size > MAX_MANIFEST_BYTES:
         raise _fail(path, f"is {path.stat().st_size} bytes", f"expected a manifest under {MAX_MANIFEST_BYTES} bytes")
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (ValueError, UnicodeDecodeError, RecursionError) as e:
-        raise _fail(path, f"is not valid JSON ({' '.join(str(e).split())[:120]})", "expected a JSON data manifest") from None
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        raise _fail(path, "is not UTF-8 text", "expected a data manifest") from None
+    try:
+        data = json.loads(text, parse_int=_parse_int, parse_float=_parse_float, parse_constant=_refuse_constant)
+    except json.JSONDecodeError as e:
+        raise ValueError(f"{path}:{e.lineno}: not valid JSON; expected a data manifest") from None
+    except _NonStandardNumber as e:  # NaN, Infinity: Python reads them, JSON (and the C# reader) does not
+        line = text.count("\n", 0, max(text.find(e.name), 0)) + 1
+        raise ValueError(f"{path}:{line}: not valid JSON; expected a data manifest") from None
+    except (ValueError, RecursionError):
+        raise _fail(path, "is not valid JSON (nested too deeply)", "expected a data manifest") from None
     if not isinstance(data, dict):
-        raise _fail(path, "holds no JSON object", "expected {\"defaults\": {...}, \"files\": {GLOB: {...}}}")
-    unknown = set(data) - {"folder", "licence", "defaults", "files", "groups", "comment"}
-    if unknown:
-        raise _fail(path, f"has unknown fields {sorted(unknown)}",
-                    "expected folder, licence, defaults, files, groups, comment")
-    for key in ("defaults",):
-        if key in data and not isinstance(data[key], dict):
-            raise _fail(path, f"\"{key}\" is not an object", "expected per-file settings")
-    if "files" in data and not (isinstance(data["files"], dict) and all(isinstance(v, dict) for v in data["files"].values())):
-        raise _fail(path, "\"files\" is not an object of objects", "expected {GLOB: {setting: value}}")
-    for where in [data.get("defaults", {})] + list(data.get("files", {}).values()):
-        _check_settings(path, where)
+        raise _fail(path, "holds no JSON object", "expected a data manifest")
+    for key in data:
+        if key not in TOP_FIELDS:
+            raise _fail(path, f"unknown field {_json_text(key)}", "expected " + ", ".join(TOP_FIELDS))
+    if "defaults" in data:
+        if not isinstance(data["defaults"], dict):
+            raise _fail(path, "\"defaults\" is not an object", SETTINGS_EXPECTED)
+        _check_settings(path, data["defaults"])
+    if "files" in data:
+        if not isinstance(data["files"], dict):
+            raise _fail(path, "\"files\" is not an object", "expected {GLOB: {setting: value}}")
+        for glob, settings in data["files"].items():
+            if not isinstance(settings, dict):
+                raise _fail(path, f"\"files\" {_json_text(glob)} is not an object", SETTINGS_EXPECTED)
+            _check_settings(path, settings)
     if "groups" in data:
-        try:
-            re.compile(str(data["groups"]))
-        except re.error as e:
-            raise _fail(path, f"\"groups\" is not a regular expression ({e})", "expected e.g. \"^(\\\\d+)_\"") from None
+        _check_groups(path, data["groups"])
     return data
 
 
 def _check_settings(path: Path, settings: Dict) -> None:
-    unknown = set(settings) - FILE_FIELDS
-    if unknown:
-        raise _fail(path, f"unknown settings {sorted(unknown)}", f"expected {sorted(FILE_FIELDS)}")
+    for key in settings:
+        if key not in FILE_FIELDS:
+            raise _fail(path, f"unknown setting {_json_text(key)}", "expected " + ", ".join(FILE_FIELD_ORDER))
     for key in ("from_frame", "reference_frame"):
         v = settings.get(key)
         if v is not None and not (isinstance(v, int) and not isinstance(v, bool) and 0 <= v < 1_000_000):
-            raise _fail(path, f"\"{key}\": {v!r}", "expected a frame index from 0 (or null)")
+            raise _fail(path, f"\"{key}\": {_json_text(v)}", "expected a frame index from 0 (or null)")
     v = settings.get("fps")
     if v is not None and not (isinstance(v, (int, float)) and not isinstance(v, bool) and 1 <= v <= 1000):
-        raise _fail(path, f"\"fps\": {v!r}", "expected a frame rate from 1 to 1000 (or null)")
+        raise _fail(path, f"\"fps\": {_json_text(v)}", "expected a frame rate from 1 to 1000 (or null)")
     if settings.get("map") is not None and not isinstance(settings["map"], str):
-        raise _fail(path, f"\"map\": {settings['map']!r}", "expected a path to a JSON joint map (or null)")
+        raise _fail(path, f"\"map\": {_json_text(settings['map'])}", "expected a path to a JSON joint map (or null)")
     if "skip" in settings and not isinstance(settings["skip"], bool):
-        raise _fail(path, f"\"skip\": {settings['skip']!r}", "expected true or false")
+        raise _fail(path, f"\"skip\": {_json_text(settings['skip'])}", "expected true or false")
     v = settings.get("accept_reference_pose")
     if v is not None and not isinstance(v, bool):
-        raise _fail(path, f"\"accept_reference_pose\": {v!r}"[:80], "expected true or false (or null)")
+        raise _fail(path, f"\"accept_reference_pose\": {_json_text(v)}", "expected true or false (or null)")
     v = settings.get("up")
     if v is not None and v not in UP_AXES:
-        raise _fail(path, f"\"up\": {v!r}"[:80], "expected \"auto\", \"y\" or \"z\" (or null)")
+        raise _fail(path, f"\"up\": {_json_text(v)}", "expected \"auto\", \"y\" or \"z\" (or null)")
+
+
+def _check_groups(path: Path, groups) -> None:
+    """A string that compiles and cannot backtrack catastrophically on a long name (issue 31, classes 5,
+    12, 14): Python's `re` has no time limit, so a pattern that repeats a group holding a repetition or an
+    alternative (`^(a|aa)+$`, `(\\w+)*x`) is refused before any name is matched."""
+    if not isinstance(groups, str):
+        raise _fail(path, f"\"groups\": {_json_text(groups)}",
+                    "expected a regular expression (a string) whose group 1 names a file's subject, e.g. \"^(\\\\d+)_\"")
+    try:
+        re.compile(groups)
+    except (re.error, RecursionError, OverflowError):
+        raise _fail(path, "\"groups\" is not a regular expression", GROUPS_EXPECTED) from None
+    if repeats_a_backtracking_group(groups):
+        raise _fail(path, "\"groups\" repeats a group that holds a repetition or an alternative "
+                    "(catastrophic backtracking)", GROUPS_EXPECTED)
+
+
+_COUNTED_REPEAT = re.compile(r"\{\d*,?\d*\}")
+
+
+def repeats_a_backtracking_group(pattern: str) -> bool:
+    """Whether `pattern` applies *, + or {m,n} to a group that itself holds a repetition (*, +, ?, {m,n}) or
+    an alternative (|): the shape whose matching time can grow exponentially with the text. The same scan as
+    the C# DataManifest.RepeatsABacktrackingGroup."""
+    risky: List[bool] = []  # one per open group: holds a repetition or an alternative
+    i, n = 0, len(pattern)
+
+    def repeat_at(j: int) -> bool:
+        return j < n and (pattern[j] in "*+" or (pattern[j] == "{" and _COUNTED_REPEAT.match(pattern, j) is not None))
+
+    while i < n:
+        c = pattern[i]
+        if c == "\\":
+            i += 2
+            continue
+        if c == "[":  # a set: nothing inside it groups or repeats
+            j = i + 1
+            if j < n and pattern[j] == "^":
+                j += 1
+            if j < n and pattern[j] == "]":
+                j += 1
+            while j < n and pattern[j] != "]":
+                j += 2 if pattern[j] == "\\" else 1
+            i = j + 1
+            continue
+        if c == "(":
+            risky.append(False)
+            i += 1
+            if i < n and pattern[i] == "?":  # (?:  (?=  (?!  (?<=  (?<!  (?P<name>  (?<name>
+                i += 1
+                if pattern.startswith("P<", i) or (pattern.startswith("<", i) and not pattern.startswith(("<=", "<!"), i)):
+                    close = pattern.find(">", i)
+                    i = n if close < 0 else close + 1
+                elif pattern.startswith(("<=", "<!"), i):
+                    i += 2
+                else:
+                    i += 1
+            continue
+        if c == ")":
+            inner = risky.pop() if risky else False
+            i += 1
+            if repeat_at(i) and inner:
+                return True
+            if risky and (inner or repeat_at(i) or (i < n and pattern[i] == "?")):
+                risky[-1] = True
+            continue
+        if risky and (c in "|*+?" or repeat_at(i)):
+            risky[-1] = True
+        i += 1
+    return False
 
 
 def open_source(spec: str) -> DataSource:

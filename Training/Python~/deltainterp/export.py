@@ -15,6 +15,7 @@ from __future__ import annotations
 import inspect
 import io
 import json
+import math
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,6 +28,7 @@ from torch import nn
 from . import contract as C, safe_output
 from .checkpoint import LoadedModel
 from .model import DeltaInterpolator
+from .onnx_reference import run_model
 from .operators import check_operators
 
 Tensor = torch.Tensor
@@ -57,8 +59,9 @@ class WholeGraph(nn.Module):
     def forward(self, key_features: Tensor, key_frame_indices: Tensor, query_frame_indices: Tensor,
                 gap_length: Tensor, query_features: Optional[Tensor] = None):
         gap = gap_length.unsqueeze(1) if self.batched else gap_length  # [B] → [B, 1]: broadcasts over tokens
-        root, rotation = self.model(key_features, key_frame_indices, query_frame_indices, gap, query_features)
-        return (root, rotation) + _constants(self.model)
+        outputs = self.model(key_features, key_frame_indices, query_frame_indices, gap, query_features,
+                             with_contacts=self.model.has_contacts)
+        return tuple(outputs) + _constants(self.model)
 
 
 class KeysGraph(nn.Module):
@@ -100,7 +103,8 @@ class FrameGraph(nn.Module):
             memory = [(key_memory[i, 0:1], key_memory[i, 1:2]) for i in range(len(self.model.blocks))]
             tokens = self.model.decode_queries(memory, query_frame_indices, gap_length, query_features)
         root, rotation = self.model.heads(tokens)
-        return (root, rotation) + _constants(self.model)
+        contacts = (self.model.contacts(tokens, memory, rows=self.batched),) if self.model.has_contacts else ()
+        return (root, rotation) + contacts + _constants(self.model)
 
 
 class ExportCheckError(ValueError):
@@ -145,11 +149,12 @@ def example_inputs(model: DeltaInterpolator, kind: str, keys: int = 11, queries:
 def graph_specs(model: DeltaInterpolator, batched: bool = True) -> List[GraphSpec]:
     """The three graphs; `batched=False` is the version 1 layout (only to read old files' weights)."""
     consts = list(C.CONSTANT_OUTPUTS)
-    deltas = [C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA]
+    # contract version 3: the whole and frame graphs of a model with a contact head also emit foot_contacts
+    deltas = [C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA] + ([C.FOOT_CONTACTS] if model.has_contacts else [])
     qf = [C.QUERY_FEATURES] if model.config.input_delta_mode == "none" else []
     if not batched:
         qf_axes = {C.QUERY_FEATURES: {1: "N"}} if qf else {}
-        out_axes = {C.ROOT_POSITION_DELTA: {1: "N"}, C.ROTATION_6D_DELTA: {1: "N"}}
+        out_axes = {name: {1: "N"} for name in deltas}
         return [
             GraphSpec("whole", WholeGraph(model, False),
                       [C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.QUERY_FRAME_INDICES, C.GAP_LENGTH] + qf,
@@ -164,7 +169,7 @@ def graph_specs(model: DeltaInterpolator, batched: bool = True) -> List[GraphSpe
                       {C.KEY_MEMORY: {2: "K"}, C.QUERY_FRAME_INDICES: {0: "N"}, **qf_axes, **out_axes}),
         ]
     qf_axes = {C.QUERY_FEATURES: {0: "B", 1: "N"}} if qf else {}
-    out_axes = {C.ROOT_POSITION_DELTA: {0: "B", 1: "N"}, C.ROTATION_6D_DELTA: {0: "B", 1: "N"}}
+    out_axes = {name: {0: "B", 1: "N"} for name in deltas}
     return [
         GraphSpec("whole", WholeGraph(model),
                   [C.KEY_FEATURES, C.KEY_FRAME_INDICES, C.QUERY_FRAME_INDICES, C.GAP_LENGTH] + qf,
@@ -184,6 +189,18 @@ def graph_specs(model: DeltaInterpolator, batched: bool = True) -> List[GraphSpe
 
 def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
     cfg = loaded.config
+    contacts = {}
+    if loaded.model.has_contacts:
+        # which model joint each foot_contacts channel is, and where a frame counts as planted (p ≥ threshold,
+        # chosen on validation); every graph of the model carries them, the keys graph too (one metadata per model)
+        contacts = {"contact_joints": list(C.CONTACT_JOINTS), "contact_threshold": float(loaded.contact_threshold)}
+    architecture = {"width": cfg.width, "blocks": cfg.blocks, "heads": cfg.heads,
+                    "embedding_dim": cfg.embedding_dim, "embedding_size": cfg.embedding_size,
+                    "parameters": loaded.model.parameter_count()}
+    if loaded.model.has_contacts:
+        architecture["contact_head"] = cfg.contact_head
+        if cfg.contact_head in ("mlp", "block"):
+            architecture["contact_hidden"] = cfg.contact_hidden
     return {
         "contract_version": C.CONTRACT_VERSION,
         "name": name,
@@ -203,9 +220,8 @@ def metadata(loaded: LoadedModel, kind: str, name: str) -> Dict:
                                         int(loaded.train_config.get("max_gap", TRAINING_MISSING[1]))], "fps": loaded.fps,
                      "data": loaded.data_description or "not recorded"},
         "max_frame_index": C.MAX_FRAME_INDEX,
-        "architecture": {"width": cfg.width, "blocks": cfg.blocks, "heads": cfg.heads,
-                         "embedding_dim": cfg.embedding_dim, "embedding_size": cfg.embedding_size,
-                         "parameters": loaded.model.parameter_count()},
+        "architecture": architecture,
+        **contacts,
     }
 
 
@@ -236,6 +252,7 @@ def _declare_output_shapes(proto, loaded: LoadedModel, spec: GraphSpec) -> None:
     state the contract's shapes instead, so that a runtime inspecting the model sees [1, N, J, 6]."""
     cfg = loaded.config
     shapes = {C.ROOT_POSITION_DELTA: ["B", "N", 3], C.ROTATION_6D_DELTA: ["B", "N", cfg.joints, 6],
+              C.FOOT_CONTACTS: ["B", "N", len(C.CONTACT_JOINTS)],
               C.KEY_MEMORY: ["B", cfg.blocks, 2, "K", cfg.width], **{c: [1] for c in C.CONSTANT_OUTPUTS}}
     for out in proto.graph.output:
         dims = out.type.tensor_type.shape.dim
@@ -253,6 +270,15 @@ def export_graph(loaded: LoadedModel, spec: GraphSpec, name: str):
     """Trace one graph → onnx.ModelProto with metadata; raises OperatorError on forbidden operators."""
     import onnx
     model = loaded.model.eval()
+    if model.has_contacts:
+        names = list(loaded.skeleton.names)
+        lacking = [j for j in C.CONTACT_JOINTS if j not in names]
+        if lacking:
+            raise ExportCheckError(f"{name}: a contact head, but the skeleton has no joint {lacking[0]}; expected "
+                                   f"the joints {', '.join(C.CONTACT_JOINTS)} (the foot_contacts channels)")
+        if not (math.isfinite(loaded.contact_threshold) and 0.0 < loaded.contact_threshold < 1.0):
+            raise ExportCheckError(f"{name}: contact threshold {loaded.contact_threshold}; expected a number "
+                                   "between 0 and 1")
     # traced with two rows of different gap lengths, so nothing about one row becomes a constant
     inputs = example_inputs(model, spec.kind, gap=[5, 7])
     args = tuple(inputs[n] for n in spec.input_names)
@@ -287,13 +313,12 @@ def verify(loaded: LoadedModel, protos: Dict[str, object], tolerance: float = 1e
     """Evaluate every graph with the numpy reference evaluator on several (K, N, n) and compare with
     torch; also whole == keys + frame. A tuple n is a batch of rows with those gap lengths. Returns the largest difference; raises ExportCheckError above
     `tolerance`."""
-    from .onnx_reference import run_model
     model = loaded.model.eval()
     worst = 0.0
     for keys, queries, gap in shapes:
         whole_in = example_inputs(model, "whole", keys, queries, gap, seed=keys * 100 + queries)
         with torch.no_grad():
-            expected = WholeGraph(model)(*whole_in.values())
+            expected = WholeGraph(model)(*whole_in.values())  # deltas, contacts when the model has them, constants
             memory = KeysGraph(model)(whole_in[C.KEY_FEATURES], whole_in[C.KEY_FRAME_INDICES],
                                       whole_in[C.GAP_LENGTH])[0]
         np_in = {k: v.numpy() for k, v in whole_in.items()}
@@ -306,7 +331,8 @@ def verify(loaded: LoadedModel, protos: Dict[str, object], tolerance: float = 1e
             frame_in[C.QUERY_FEATURES] = np_in[C.QUERY_FEATURES]
         got_frame = run_model(protos["frame"], frame_in)
         pairs = [(got_keys[C.KEY_MEMORY], memory.numpy(), "keys graph vs torch")]
-        for i, out_name in enumerate((C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA)):
+        outputs = (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA) + ((C.FOOT_CONTACTS,) if model.has_contacts else ())
+        for i, out_name in enumerate(outputs):
             pairs.append((got_whole[out_name], expected[i].numpy(), f"whole {out_name} vs torch"))
             pairs.append((got_frame[out_name], expected[i].numpy(), f"keys+frame {out_name} vs torch"))
         for got, want, what in pairs:

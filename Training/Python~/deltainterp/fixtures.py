@@ -20,12 +20,15 @@ import torch
 from . import contract as C
 from . import quaternions, safe_output
 from .checkpoint import LoadedModel, load_checkpoint, save_checkpoint_file
+from .export import export_model
 from .kinematics import forward_kinematics
 from .lafan1 import lafan1_skeleton
 from .model import DeltaInterpolator, preset
+from .onnx_reference import run_model
 from .sampler import TransitionSampler
 from .skeleton import Skeleton
 from .transition import run_transition
+from .export import export_model
 
 Tensor = torch.Tensor
 SEED = 1234
@@ -33,6 +36,10 @@ HEAD_STD = 0.01          # random head weights: visible deltas (a few degrees, a
 UNIT_SCALE = 0.01        # cm → m, as the LaFAN1 models
 MODEL_NAME = "tiny-model"
 SIGNIFICANT_DIGITS = 9   # float32 round-trips exactly; float64 poses keep ~1e-9 relative accuracy
+CONTACTS_MODEL_NAME = "tiny-model-contacts"  # the same network with a contact head (contract version 3)
+CONTACT_HIDDEN = 16
+CONTACT_STD = 0.5        # random contact head: probabilities spread over (0, 1), not all near 0.5
+CONTACT_THRESHOLD = 0.4  # not 0.5, so a reader that ignores the metadata's threshold is caught
 
 
 @dataclass(frozen=True)
@@ -58,25 +65,36 @@ CASES = (
 )
 
 
-def make_tiny_model(skeleton: Skeleton, seed: int = SEED) -> LoadedModel:
+def make_tiny_model(skeleton: Skeleton, seed: int = SEED, contacts: bool = False) -> LoadedModel:
+    """The tiny fixture network; with `contacts` also a contact head (contract version 3's `foot_contacts`), whose
+    trunk and motion heads are the same as without it (the head is built last, from its own generator)."""
     torch.manual_seed(seed)
-    model = DeltaInterpolator(preset("tiny", joints=skeleton.joint_count))
+    extra = dict(contact_head="mlp", contact_hidden=CONTACT_HIDDEN) if contacts else {}
+    model = DeltaInterpolator(preset("tiny", joints=skeleton.joint_count, **extra))
     g = torch.Generator().manual_seed(seed + 1)
     with torch.no_grad():
         for head in (model.root_head, model.rotation_head):
             head.weight.copy_(torch.randn(head.weight.shape, generator=g) * HEAD_STD)
             head.bias.copy_(torch.randn(head.bias.shape, generator=g) * HEAD_STD)
+        if contacts:
+            c = torch.Generator().manual_seed(seed + 2)
+            for p in model.contact_head.parameters():
+                p.copy_(torch.randn(p.shape, generator=c) * CONTACT_STD)
     model.eval()
     return LoadedModel(model, skeleton, UNIT_SCALE, 0,
-                       data_description="none: untrained tiny fixture with random non-zero heads")
+                       data_description="none: untrained tiny fixture with random non-zero heads",
+                       contact_threshold=CONTACT_THRESHOLD if contacts else 0.5)
 
 
 def checkpoint_state(loaded: LoadedModel) -> Dict:
     """A checkpoint `load_checkpoint` (hence evaluate/export) accepts."""
-    return {"model": loaded.model.state_dict(), "model_config": loaded.config.to_dict(),
-            "skeleton": loaded.skeleton.to_json(), "unit_scale": loaded.unit_scale, "step": loaded.step,
-            "train_config": {}, "validation": {}, "fps": loaded.fps,
-            "data_description": loaded.data_description}
+    state = {"model": loaded.model.state_dict(), "model_config": loaded.config.to_dict(),
+             "skeleton": loaded.skeleton.to_json(), "unit_scale": loaded.unit_scale, "step": loaded.step,
+             "train_config": {}, "validation": {}, "fps": loaded.fps,
+             "data_description": loaded.data_description}
+    if loaded.model.has_contacts:
+        state["contact_threshold"] = loaded.contact_threshold
+    return state
 
 
 # -- synthetic requests ------------------------------------------------------------------------------
@@ -153,15 +171,20 @@ def golden_case(loaded: LoadedModel, case: Case) -> Dict:
         "inputs": {C.KEY_FEATURES: _tolist(features.reshape(-1)), C.KEY_FRAME_INDICES: layout.key_frames,
                    C.QUERY_FRAME_INDICES: layout.query_frames, C.GAP_LENGTH: [n]},
         "outputs": {C.ROOT_POSITION_DELTA: _tolist(root_delta.reshape(-1)),
-                    C.ROTATION_6D_DELTA: _tolist(rot_delta.reshape(-1))},
+                    C.ROTATION_6D_DELTA: _tolist(rot_delta.reshape(-1)),
+                    **({C.FOOT_CONTACTS: _tolist(result.foot_contacts.reshape(-1))}
+                       if result.foot_contacts is not None else {})},
         "result": {"root_positions": _tolist(world_root[0]), "local_quaternions": _tolist(world_rot[0]),
                    "global_positions": _tolist(world_pos[0])},
     }
 
 
-def golden_document(loaded: LoadedModel, cases=CASES) -> Dict:
-    return {"contract_version": C.CONTRACT_VERSION, "model": f"{MODEL_NAME}.onnx",
-            "cases": [golden_case(loaded, c) for c in cases]}
+def golden_document(loaded: LoadedModel, cases=CASES, model_name: str = MODEL_NAME) -> Dict:
+    doc = {"contract_version": C.CONTRACT_VERSION, "model": f"{model_name}.onnx"}
+    if loaded.model.has_contacts:
+        doc.update(contact_joints=list(C.CONTACT_JOINTS), contact_threshold=loaded.contact_threshold)
+    doc["cases"] = [golden_case(loaded, c) for c in cases]
+    return doc
 
 
 def dump_golden(doc: Dict) -> str:
@@ -173,7 +196,6 @@ def dump_golden(doc: Dict) -> str:
 
 def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-5) -> float:
     """Feed every golden case's inputs to the exported whole graph (numpy evaluator); compare outputs."""
-    from .onnx_reference import run_model
     import onnx
     proto = onnx.load(str(onnx_path))
     worst = 0.0
@@ -185,7 +207,11 @@ def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-
                  C.QUERY_FRAME_INDICES: np.asarray(inp[C.QUERY_FRAME_INDICES], np.int64),
                  C.GAP_LENGTH: np.asarray(inp[C.GAP_LENGTH], np.int64)}
         got = run_model(proto, feeds)
-        for name in (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA):
+        for name in (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA, C.FOOT_CONTACTS):
+            if name == C.FOOT_CONTACTS and name not in case["outputs"]:
+                if name in got:
+                    raise ValueError(f"golden case {case['name']}: ONNX has {name}, the golden document not")
+                continue
             d = float(np.abs(got[name].reshape(-1) - np.asarray(case["outputs"][name])).max())
             worst = max(worst, d)
             if d > tolerance:
@@ -194,21 +220,29 @@ def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-
 
 
 def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -> Dict[str, Path]:
-    """tiny-model.pt, tiny-model{,.keys,.frame}.onnx and golden.json in `out_dir`."""
-    from .export import export_model
+    """tiny-model.pt, tiny-model{,.keys,.frame}.onnx and golden.json in `out_dir` (no contact output), and the
+    same network with a contact head: tiny-model-contacts.pt, tiny-model-contacts{,.keys,.frame}.onnx and
+    golden-contacts.json (whose outputs also hold `foot_contacts`)."""
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise ValueError(f"{out}: is a file, not a folder; expected the fixtures folder (Tests/Fixtures~)")
     out.mkdir(parents=True, exist_ok=True)
-    loaded = make_tiny_model(lafan1_skeleton(data_dir))
-    ckpt = out / f"{MODEL_NAME}.pt"
+    skeleton = lafan1_skeleton(data_dir)
+    paths = _write_model_fixtures(out, make_tiny_model(skeleton), MODEL_NAME, "golden.json")
+    contacts = _write_model_fixtures(out, make_tiny_model(skeleton, contacts=True), CONTACTS_MODEL_NAME,
+                                     "golden-contacts.json")
+    return {**paths, **{f"contacts_{k}": v for k, v in contacts.items()}}
+
+
+def _write_model_fixtures(out: Path, loaded: LoadedModel, name: str, golden_name: str) -> Dict[str, Path]:
+    ckpt = out / f"{name}.pt"
     # Regenerating the repository's fixtures replaces them by design (no --force); each file still goes
     # through a temporary file + rename, so a failure leaves the previous set intact.
     save_checkpoint_file(checkpoint_state(loaded), ckpt)
     loaded = load_checkpoint(ckpt)  # everything below goes through what evaluate/export would load
-    report = export_model(loaded, out / f"{MODEL_NAME}.onnx", name="DeltaInterpolator-tiny-fixture")
-    doc = golden_document(loaded)
+    report = export_model(loaded, out / f"{name}.onnx", name="DeltaInterpolator-tiny-fixture")
+    doc = golden_document(loaded, model_name=name)
     check_golden_against_onnx(doc, report.paths["whole"])
-    golden = out / "golden.json"
+    golden = out / golden_name
     safe_output.write_text(golden, dump_golden(doc))
     return {"checkpoint": ckpt, **{f"onnx_{k}": v for k, v in report.paths.items()}, "golden": golden}

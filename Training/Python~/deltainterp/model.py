@@ -14,9 +14,15 @@ from typing import List, Optional, Tuple
 import torch
 from torch import nn
 
-from .contract import FEATURES_PER_JOINT, INPUT_DELTA_MODES, OUTPUT_DELTA_MODES
+from .contract import CONTACT_JOINTS, FEATURES_PER_JOINT, INPUT_DELTA_MODES, OUTPUT_DELTA_MODES
 
 Tensor = torch.Tensor
+
+# The optional foot-contact head on the query tokens (contract version 3's `foot_contacts`): none, one Linear,
+# Linear → ReLU → Linear with `contact_hidden` units, or `block`: one more transformer block of its own (query
+# tokens attending to the last block's key memory, started as a copy of that block) before that MLP, so that
+# the head can look at the keys again for what the motion heads never needed.
+CONTACT_HEADS = ("none", "linear", "mlp", "block")
 
 
 @dataclass
@@ -30,6 +36,8 @@ class ModelConfig:
     dropout: float = 0.2
     output_delta_mode: str = "slerp"
     input_delta_mode: str = "last_pose"
+    contact_head: str = "none"
+    contact_hidden: int = 128
 
     def __post_init__(self) -> None:
         if self.width % self.heads:
@@ -38,9 +46,21 @@ class ModelConfig:
             raise ValueError(f"output delta mode must be one of {OUTPUT_DELTA_MODES}")
         if self.input_delta_mode not in INPUT_DELTA_MODES:
             raise ValueError(f"input delta mode must be one of {INPUT_DELTA_MODES}")
+        if self.contact_head not in CONTACT_HEADS:
+            raise ValueError(f"contact head {str(self.contact_head)[:40]!r}; expected one of {CONTACT_HEADS}")
+        if (not isinstance(self.contact_hidden, int) or isinstance(self.contact_hidden, bool)
+                or not 1 <= self.contact_hidden <= 4096):
+            raise ValueError(f"contact hidden size {str(self.contact_hidden)[:40]}; expected an integer 1..4096")
 
     def to_dict(self) -> dict:
-        return asdict(self)
+        """Without the contact fields when there is no contact head, so that the configuration of a model without
+        one reads (and compares, on resume and warm start) exactly as before contract version 3."""
+        d = asdict(self)
+        if self.contact_head == "none":
+            del d["contact_head"], d["contact_hidden"]
+        elif self.contact_head == "linear":
+            del d["contact_hidden"]
+        return d
 
 
 PRESETS = {
@@ -154,6 +174,21 @@ class Block(nn.Module):
         return self.mlp(x)
 
 
+class ContactBranch(nn.Module):
+    """The `block` contact head: a transformer block of its own on the query tokens, attending to the last
+    block's key memory, then Linear → ReLU → Linear to the contact logits."""
+
+    def __init__(self, c: "ModelConfig", channels: int) -> None:
+        super().__init__()
+        self.block = Block(c.width, c.heads, c.dropout)
+        # it attends to the last block's memory as that block projected it: no key/value projections of its own
+        del self.block.attention.key, self.block.attention.value
+        self.mlp = nn.Sequential(nn.Linear(c.width, c.contact_hidden), nn.ReLU(), nn.Linear(c.contact_hidden, channels))
+
+    def forward(self, tokens: Tensor, memory: Tuple[Tensor, Tensor], rows: bool = False) -> Tensor:
+        return self.mlp(self.block(tokens, memory[0], memory[1], rows))
+
+
 class DeltaInterpolator(nn.Module):
     def __init__(self, config: ModelConfig) -> None:
         super().__init__()
@@ -178,6 +213,15 @@ class DeltaInterpolator(nn.Module):
         for head in (self.root_head, self.rotation_head):
             nn.init.zeros_(head.weight)
             nn.init.zeros_(head.bias)
+        channels = len(CONTACT_JOINTS)
+        self.contact_head: Optional[nn.Module] = None
+        if c.contact_head == "linear":
+            self.contact_head = nn.Linear(c.width, channels)
+        elif c.contact_head == "mlp":
+            self.contact_head = nn.Sequential(nn.Linear(c.width, c.contact_hidden), nn.ReLU(),
+                                              nn.Linear(c.contact_hidden, channels))
+        elif c.contact_head == "block":
+            self.contact_head = ContactBranch(c, channels)
 
     # -- the two halves -------------------------------------------------------------------------
     def encode_keys(self, key_features: Tensor, key_frame_indices: Tensor, gap_length: Tensor
@@ -216,10 +260,38 @@ class DeltaInterpolator(nn.Module):
         rotation = self.rotation_head(tokens).reshape(tokens.shape[0], -1, self.config.joints, 6)
         return root, rotation
 
+    def contact_logits(self, tokens: Tensor, memory: Optional[List[Tuple[Tensor, Tensor]]] = None,
+                       rows: bool = False) -> Tensor:
+        """(B, N, 4) logits of the query tokens' foot contacts (channels in CONTACT_JOINTS' order). A `block`
+        head also needs the key memory (`decode_queries`' `memory`, and its `rows` layout)."""
+        if self.contact_head is None:
+            raise ValueError("this network has no contact head; expected a model_config with contact_head "
+                             "'linear', 'mlp' or 'block'")
+        if isinstance(self.contact_head, ContactBranch):
+            if memory is None:
+                raise ValueError("a 'block' contact head needs the key memory")
+            return self.contact_head(tokens, memory[-1], rows)
+        return self.contact_head(tokens)
+
+    def contacts(self, tokens: Tensor, memory: Optional[List[Tuple[Tensor, Tensor]]] = None,
+                 rows: bool = False) -> Tensor:
+        """(B, N, 4) contact probabilities: the `foot_contacts` output (Sigmoid inside the graph)."""
+        return torch.sigmoid(self.contact_logits(tokens, memory, rows))
+
+    @property
+    def has_contacts(self) -> bool:
+        return self.contact_head is not None
+
     def forward(self, key_features: Tensor, key_frame_indices: Tensor, query_frame_indices: Tensor,
-                gap_length: Tensor, query_features: Optional[Tensor] = None, with_keys: bool = False):
+                gap_length: Tensor, query_features: Optional[Tensor] = None, with_keys: bool = False,
+                with_contacts: bool = False):
         """Deltas for the query (missing) frames: root (B, N, 3), 6D (B, N, J, 6). With `with_keys`
-        (training, through DistributedDataParallel's forward) also those of the key frames."""
+        (training, through DistributedDataParallel's forward) also those of the key frames. With
+        `with_contacts` (a model with a contact head) a third output: contact probabilities (B, N, 4)."""
+        if with_contacts:
+            _, memory = self.encode_keys(key_features, key_frame_indices, gap_length)
+            tokens = self.decode_queries(memory, query_frame_indices, gap_length, query_features)
+            return self.heads(tokens) + (self.contacts(tokens, memory),)
         if with_keys:
             return self.forward_with_keys(key_features, key_frame_indices, query_frame_indices, gap_length,
                                           query_features)
@@ -237,3 +309,7 @@ class DeltaInterpolator(nn.Module):
 
     def parameter_count(self) -> int:
         return sum(p.numel() for p in self.parameters())
+
+    def trunk_parameters(self):
+        """Every parameter but the contact head's: what a contact head on a frozen trunk leaves unchanged."""
+        return [p for n, p in self.named_parameters() if not n.startswith("contact_head.")]

@@ -5,6 +5,7 @@ same code path the exporter's golden vectors and the C# runtime follow.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Dict, Optional, Sequence, Tuple
 
@@ -45,7 +46,6 @@ def leg_length(names: Sequence[str], offsets) -> float:
     ReferencePose.ModelTPose), in the offsets' units: thigh + shin straight down, plus the ankle→toe bone,
     which that pose points 30° down (half its length). The small hip→thigh offset is left out (about 2 %
     of a leg); the mean of both legs. 0 when the skeleton lacks the LaFAN1 leg joints."""
-    import math
     total = []
     for side in ("Left", "Right"):
         try:

@@ -29,6 +29,7 @@ from typing import Dict, List, Optional, Tuple
 import numpy as np
 
 from . import contract as C, safe_output
+from .onnx_reference import run_model
 from .safe_input import load_onnx
 
 FORMS = ("fused", "integer")
@@ -241,7 +242,6 @@ def probe_inputs(meta: Dict, kind: str, keys: int = 11, queries: int = 8, gaps=(
 def relative_differences(float_protos: Dict[str, object], quantized: Dict[str, object]) -> Dict[str, float]:
     """max |int8 − float| / max |float| of each graph's float outputs on probe inputs, evaluated with the
     numpy reference evaluator (which implements the quantized operators by their specifications)."""
-    from .onnx_reference import run_model
     meta = json.loads(next(e.value for e in float_protos["whole"].metadata_props if e.key == "deltainterp"))
     if meta.get("input_delta_mode") == "none":
         raise QuantizeError("input delta mode 'none' (an ablation) is not supported here")

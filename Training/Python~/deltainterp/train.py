@@ -9,6 +9,7 @@ import json
 import math
 import os
 import random
+import sys
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -19,14 +20,16 @@ import torch
 
 from . import quaternions, safe_output
 from .benchmark import l2q as benchmark_l2q
-from .checkpoint import CheckpointError, read_checkpoint, save_checkpoint_file
+from .checkpoint import CheckpointError, load_checkpoint, read_checkpoint, save_checkpoint_file
 from .data import MotionPack, load_pack, split_windows, training_ranges, windows
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
 from .localize import unlocalize
 from .objective import (SkeletonTensors, foot_joint_indices, foot_skating, leg_length, loss, make_batch, predict,
                         span_feet)
+from .plots import plot_training
 from .sampler import TransitionSampler
+from .warm_start import load_onnx_weights
 
 
 @dataclass
@@ -60,9 +63,16 @@ class TrainConfig:
     foot_contact_weight: float = 0.0  # 0 = off; else × the planted-foot speed loss (objective.loss)
 
 
+def warmup_steps(cfg: TrainConfig) -> int:
+    """The warm-up the run uses: --warmup, or a tenth of the run when --warmup is longer than --steps
+    (a short trial run with the default 500 would otherwise never reach its learning rate)."""
+    return cfg.warmup_steps if cfg.warmup_steps <= cfg.steps else max(1, cfg.steps // 10)
+
+
 def learning_rate(cfg: TrainConfig, step: int) -> float:
-    if step < cfg.warmup_steps:
-        return 1e-6 + (cfg.peak_lr - 1e-6) * step / cfg.warmup_steps
+    warmup = warmup_steps(cfg)
+    if step < warmup:
+        return 1e-6 + (cfg.peak_lr - 1e-6) * step / warmup
     return cfg.peak_lr * (0.1 if step >= cfg.decay_at * cfg.steps else 1.0)
 
 
@@ -218,9 +228,7 @@ VALIDATION_LONG_GAPS = (60,)      # besides 5, 15, 30, when --max-gap reaches th
 def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
     """A warm start: the weights of an exported whole graph (.onnx) or of a checkpoint (.pt)."""
     if str(path).endswith(".onnx"):
-        from .warm_start import load_onnx_weights
         return load_onnx_weights(path, config)
-    from .checkpoint import load_checkpoint
     loaded = load_checkpoint(path)
     if loaded.config.to_dict() != config.to_dict():
         raise ValueError(f"{path}: architecture {loaded.config.to_dict()}; expected {config.to_dict()}")
@@ -389,8 +397,14 @@ def open_run(run: TrainingRun) -> Optional[Dict]:
             print(f"warning: {ckpt_path}: --steps {cfg.steps} but the run used {saved_cfg['steps']}: training on to "
                   f"step {cfg.steps}, the lr drop moves from step {int(cfg.decay_at * saved_cfg['steps'])} to "
                   f"{int(cfg.decay_at * cfg.steps)}")
+            before = warmup_steps(TrainConfig(**{**asdict(cfg), "steps": int(saved_cfg["steps"])}))
+            if before != warmup_steps(cfg):
+                print(f"warning: {ckpt_path}: the warm-up changes with --steps, from {before} to {warmup_steps(cfg)} steps")
         if run.speaks and saved_cfg.get("data", cfg.data) != cfg.data:
             print(f"warning: {ckpt_path}: --data {cfg.data} but the run used {saved_cfg['data']}")
+    if run.speaks and warmup_steps(cfg) != cfg.warmup_steps:
+        print(f"warning: --warmup {cfg.warmup_steps} is longer than --steps {cfg.steps}: warming up over "
+              f"{warmup_steps(cfg)} steps (a tenth of the run) instead")
     run.out.mkdir(parents=True, exist_ok=True)
     return state
 
@@ -604,7 +618,10 @@ def run_steps(run: TrainingRun, source: WindowSource) -> None:
     # Long gaps are validated on windows of their own length (fewer files have such tails).
     long_gaps = tuple(n for n in VALIDATION_LONG_GAPS if n <= cfg.max_gap)
     long_val = {n: split_windows(run.pack, validation_length=10 + n + 1)[1] for n in long_gaps}
-    if run.speaks:
+    # A terminal gets a progress bar; a log file (nohup, CI) one line per log interval instead of
+    # thousands of carriage-return redraws.
+    line_progress = run.speaks and not sys.stderr.isatty()
+    if run.speaks and not line_progress:
         from tqdm import tqdm
         run.bar = tqdm(total=cfg.steps, initial=run.step, desc=f"train {cfg.preset}", unit="step",
                        dynamic_ncols=True)
@@ -619,8 +636,12 @@ def run_steps(run: TrainingRun, source: WindowSource) -> None:
             run.bar.update(1)
             run.bar.set_postfix(loss=f"{values['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
         if run.rank == 0 and (step % 50 == 0 or step == cfg.steps):
+            mean = float(np.mean([w["total"] for w in window_losses]))
             write_log_row(run, window_losses, lr)
             window_losses.clear()
+            if line_progress:
+                print(f"train {cfg.preset}: step {step}/{cfg.steps}  loss {mean:.4f}  lr {lr:.1e}  "
+                      f"{time.time() - run.started:.0f} s", flush=True)  # stdout: stderr keeps one line per error
         if run.rank == 0 and len(run.val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             validate(run, long_val)
         out_of_time = time_is_up(run)
@@ -638,7 +659,6 @@ def finish(run: TrainingRun) -> None:
     """Plots (rank 0), then the processes meet and leave the process group."""
     if run.rank == 0:
         try:
-            from .plots import plot_training  # matplotlib is optional: loaded only when a run ends
             plot_training(run.out)
         except Exception as e:  # plots are a convenience; never lose a run over them
             print(f"(plots skipped: {e})")

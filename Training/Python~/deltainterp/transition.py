@@ -7,13 +7,14 @@ world root positions and local quaternions of the missing frames. The same funct
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Tuple
+from typing import Optional, Tuple
 
 import torch
 
 from .checkpoint import LoadedModel
+from .decoding import decode_outputs
 from .localize import unlocalize
-from .objective import TransitionBatch, make_batch, query_deltas
+from .objective import TransitionBatch, _network_inputs, make_batch
 from .sampler import TransitionSampler
 
 Tensor = torch.Tensor
@@ -26,6 +27,8 @@ class TransitionResult:
     batch: TransitionBatch     # localization, key features and baselines
     root_delta: Tensor         # (B, n, 3) raw network output (network dtype)
     rotation_delta: Tensor     # (B, n, J, 6)
+    foot_contacts: Optional[Tensor] = None  # (B, n, 4) contact probabilities (contract.CONTACT_JOINTS), or None
+                                            # when the model has no contact head
 
 
 def request_frames(past_roots: Tensor, past_quats: Tensor, target_root: Tensor, target_quats: Tensor,
@@ -42,7 +45,6 @@ def request_frames(past_roots: Tensor, past_quats: Tensor, target_root: Tensor, 
 def run_transition(loaded: LoadedModel, past_roots: Tensor, past_quats: Tensor, target_root: Tensor,
                    target_quats: Tensor, gap: int) -> TransitionResult:
     """Geometry runs in the dtype of the inputs (float64 recommended); the network in its own dtype."""
-    from .decoding import decode_outputs
     if gap < 1:
         raise ValueError("a transition needs at least one missing frame")
     past = int(past_roots.shape[1])
@@ -51,9 +53,13 @@ def run_transition(loaded: LoadedModel, past_roots: Tensor, past_quats: Tensor, 
     cfg = loaded.config
     roots, quats = request_frames(past_roots, past_quats, target_root, target_quats, gap)
     batch = make_batch(roots, quats, layout, skeleton, cfg.output_delta_mode, cfg.input_delta_mode)
+    contacts = None
     with torch.no_grad():
-        root_delta, rotation_delta = query_deltas(loaded.model, batch)
+        if loaded.model.has_contacts:
+            root_delta, rotation_delta, contacts = loaded.model(*_network_inputs(loaded.model, batch), with_contacts=True)
+        else:
+            root_delta, rotation_delta = loaded.model(*_network_inputs(loaded.model, batch))
     root, rot = decode_outputs(cfg.output_delta_mode, batch.base_root, batch.base_rotations,
                                root_delta.to(batch.base_root.dtype), rotation_delta.to(batch.base_root.dtype))
     world_root, world_rot = unlocalize(root, rot, batch.localization, loaded.unit_scale)
-    return TransitionResult(world_root, world_rot, batch, root_delta, rotation_delta)
+    return TransitionResult(world_root, world_rot, batch, root_delta, rotation_delta, contacts)

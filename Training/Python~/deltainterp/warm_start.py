@@ -13,6 +13,8 @@ inputs (numpy reference evaluator) and refuses a mismatch.
 from __future__ import annotations
 
 import io
+import json
+import math
 import warnings
 from pathlib import Path
 from typing import Dict, Tuple
@@ -21,8 +23,12 @@ import numpy as np
 import torch
 
 from . import contract as C
+from .checkpoint import LoadedModel
+from .export import WholeGraph, _torch_onnx_export, example_inputs, graph_specs
 from .safe_input import InputPathError, load_onnx
 from .model import DeltaInterpolator, ModelConfig
+from .onnx_reference import run_model
+from .skeleton import Skeleton
 
 
 class WarmStartError(ValueError):
@@ -37,7 +43,6 @@ def _probe_mapping(config: ModelConfig, batched: bool = True) -> Dict[Tuple[str,
     real file may stand for several parameters, but every use still names its own."""
     import onnx
     from onnx import numpy_helper
-    from .export import WholeGraph, _torch_onnx_export, example_inputs, graph_specs
 
     model = DeltaInterpolator(config).eval()
     names = [n for n, _ in model.named_parameters()]
@@ -89,8 +94,6 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
     """The state dict of `config`'s network as stored in the whole graph at `path`, checked by running both."""
     import onnx
     from onnx import numpy_helper
-    from .export import WholeGraph, example_inputs
-    from .onnx_reference import run_model
 
     path = Path(path)
     proto = _load(path)
@@ -125,9 +128,19 @@ def load_onnx_weights(path: str | Path, config: ModelConfig, tolerance: float = 
         with torch.no_grad():
             want = WholeGraph(model, batched)(*feeds.values())
         got = run_model(proto, {k: v.numpy() for k, v in feeds.items()})
-        for i, out in enumerate((C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA)):
+        outputs = (C.ROOT_POSITION_DELTA, C.ROTATION_6D_DELTA) + ((C.FOOT_CONTACTS,) if model.has_contacts else ())
+        for i, out in enumerate(outputs):
+            if out not in got:
+                raise WarmStartError(f"{path}: no output {out}; expected the outputs of a whole graph "
+                                     f"({', '.join(outputs)})")
+            if got[out].shape != tuple(want[i].shape):
+                raise WarmStartError(f"{path}: output {out} has shape {list(got[out].shape)} for {list(want[i].shape)[:2]} "
+                                     f"(batch, query frames); expected {list(want[i].shape)}")
+            if not np.isfinite(got[out]).all():
+                raise WarmStartError(f"{path}: output {out} holds non-finite values (NaN or infinity); expected "
+                                     "finite outputs")
             diff = float(np.abs(got[out] - want[i].numpy()).max())
-            if diff > tolerance:
+            if not diff <= tolerance:
                 raise WarmStartError(f"{path}: rebuilt network differs from the file by {diff:.3g} in {out}; "
                                      f"expected ≤ {tolerance} (another architecture?)")
     return state
@@ -144,11 +157,7 @@ def _is_batched(proto) -> bool:
 def load_exported_model(path: str | Path):
     """An exported whole graph → a `LoadedModel` (network, skeleton, unit scale, axes from its metadata),
     so `evaluate` can score a shipped `.onnx` through the same torch path as a checkpoint."""
-    import json
-
     import onnx
-    from .checkpoint import LoadedModel
-    from .skeleton import Skeleton
 
     path = Path(path)
     proto = _load(path)
@@ -165,10 +174,12 @@ def load_exported_model(path: str | Path):
                 raise ValueError(f"architecture.{key} is {str(value)[:40]}")
         if sizes["width"] % sizes["heads"]:
             raise ValueError(f"architecture.width {sizes['width']} is not a multiple of heads {sizes['heads']}")
+        contact_head, contact_hidden, threshold = _contact_metadata(proto, meta, skeleton)
         config = ModelConfig(joints=skeleton.joint_count, width=sizes["width"], blocks=sizes["blocks"],
                              heads=sizes["heads"], embedding_dim=sizes["embedding_dim"],
                              embedding_size=sizes["embedding_size"],
-                             output_delta_mode=meta["output_delta_mode"], input_delta_mode=meta["input_delta_mode"])
+                             output_delta_mode=meta["output_delta_mode"], input_delta_mode=meta["input_delta_mode"],
+                             contact_head=contact_head, contact_hidden=contact_hidden)
         training = meta.get("training", {})
         min_past = int(training.get("past_frames", [10, 10])[0])
         fps = float(training.get("fps", 30.0))
@@ -183,4 +194,39 @@ def load_exported_model(path: str | Path):
     model.load_state_dict(load_onnx_weights(path, config))
     model.eval()
     name = str(meta.get("name", ""))[:100]
-    return LoadedModel(model, skeleton, unit_scale, 0, {"min_past": min_past}, {}, axes[0], axes[1], fps, data, name)
+    return LoadedModel(model, skeleton, unit_scale, 0, {"min_past": min_past}, {}, axes[0], axes[1], fps, data, name,
+                       contact_threshold=threshold)
+
+
+def _contact_metadata(proto, meta: dict, skeleton) -> Tuple[str, int, float]:
+    """(contact head, its hidden size, threshold) of a whole graph: ("none", 128, 0.5) without a `foot_contacts`
+    output (contract version 2, or 3 without contacts). With one, its declared shape must be [B, N, 4] and the
+    metadata must name the contract's contact joints (all in the skeleton), a threshold in (0, 1) and the head;
+    ValueError (reported by the caller as the file's metadata) otherwise."""
+    output = next((o for o in proto.graph.output if o.name == C.FOOT_CONTACTS), None)
+    arch = meta.get("architecture", {})
+    if output is None:
+        if "contact_head" in arch or "contact_joints" in meta:
+            raise ValueError(f"the metadata describes a contact head but the graph has no {C.FOOT_CONTACTS} output")
+        return "none", 128, 0.5
+    dims = output.type.tensor_type.shape.dim
+    if len(dims) != 3 or not dims[2].HasField("dim_value") or dims[2].dim_value != len(C.CONTACT_JOINTS):
+        shown = [d.dim_value if d.HasField("dim_value") else (d.dim_param or "?") for d in dims][:6]
+        raise ValueError(f"output {C.FOOT_CONTACTS} has shape {shown}, expected [B, N, {len(C.CONTACT_JOINTS)}]")
+    joints = meta.get("contact_joints")
+    if joints != list(C.CONTACT_JOINTS):
+        raise ValueError(f"contact_joints {str(joints)[:80]}, expected {list(C.CONTACT_JOINTS)}")
+    lacking = [j for j in joints if j not in skeleton.names]
+    if lacking:
+        raise ValueError(f"contact joint {lacking[0]} is not a joint of the skeleton")
+    threshold = meta.get("contact_threshold")
+    if isinstance(threshold, bool) or not isinstance(threshold, (int, float)) or not (
+            math.isfinite(threshold) and 0 < threshold < 1):
+        raise ValueError(f"contact_threshold {str(threshold)[:40]}, expected a number between 0 and 1")
+    head = arch.get("contact_head")
+    if head not in ("linear", "mlp", "block"):
+        raise ValueError(f"architecture.contact_head {str(head)[:40]}, expected 'linear', 'mlp' or 'block'")
+    hidden = arch.get("contact_hidden", 128)
+    if not isinstance(hidden, int) or isinstance(hidden, bool) or not 1 <= hidden <= 4096:
+        raise ValueError(f"architecture.contact_hidden {str(hidden)[:40]}")
+    return head, hidden, float(threshold)

@@ -14,8 +14,10 @@ sys.path.insert(0, str(TRAINING))
 
 torch.set_num_threads(1)
 
+from deltainterp import safe_output  # noqa: E402
+from deltainterp.checkpoint import save_checkpoint_file  # noqa: E402
 from deltainterp.data import MotionPack, save_pack  # noqa: E402
-from deltainterp.fixtures import Case, make_tiny_model, synthetic_request  # noqa: E402
+from deltainterp.fixtures import Case, checkpoint_state, make_tiny_model, synthetic_request  # noqa: E402
 from deltainterp.lafan1 import builtin_skeleton  # noqa: E402
 
 LAFAN1 = REPO.parent / "shared" / "data" / "lafan1"
@@ -60,4 +62,26 @@ def synthetic_pack_path(tmp_path_factory, skeleton) -> Path:
                       np.concatenate(roots), np.concatenate(quats), 1 / 30)
     path = tmp_path_factory.mktemp("pack") / "synthetic.npz"
     save_pack(pack, str(path))
+    return path
+
+
+@pytest.fixture
+def failing_rename(monkeypatch):
+    """Every safe_output rename fails after the temporary file was written in full: what an interrupted
+    or failing write leaves behind. Records the temporary files it saw."""
+    seen = []
+
+    def fail(temporary, target):
+        assert Path(temporary).exists() and Path(temporary).parent == Path(target).parent
+        seen.append(Path(temporary))
+        raise OSError(28, "No space left on device (simulated)", str(target))
+
+    monkeypatch.setattr(safe_output, "_rename", fail)
+    return seen
+
+
+@pytest.fixture(scope="module")
+def tiny_checkpoint(tmp_path_factory, tiny) -> Path:
+    path = tmp_path_factory.mktemp("ckpt") / "tiny.pt"
+    save_checkpoint_file(checkpoint_state(tiny), path)
     return path

@@ -85,10 +85,10 @@ def test_a_manifest_file_names_its_folder_relative_to_itself(tmp_path):
 
 
 @pytest.mark.parametrize("manifest, phrase", [
-    ({"default": {}}, "unknown fields"),
+    ({"default": {}}, "unknown field"),
     ({"defaults": {"from_frame": -1}}, "from_frame"),
     ({"defaults": {"fps": 0}}, "fps"),
-    ({"files": {"x": {"speed": 2}}}, "unknown settings"),
+    ({"files": {"x": {"speed": 2}}}, "unknown setting"),
     ({"groups": "("}, "regular expression"),
     ({"defaults": {"skip": "yes"}}, "skip"),
     ({"defaults": {"up": "x"}}, "\"up\""),

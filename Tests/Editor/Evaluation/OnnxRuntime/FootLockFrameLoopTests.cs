@@ -51,6 +51,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(onLowest, Is.GreaterThanOrEqualTo(Math.Min(-0.01, offLowest)), "lowest shown foot joint, leg lengths above the walk's ground");
         }
 
+        // Issue 29 item 4 (issue 27 item 5): a character whose legs are not the model's is locked on its own legs (the
+        // walk retargeted onto it is its animation; its feet are measured on its legs, in its units).
+        [TestCase(0.8)]
+        [TestCase(1.25)]
+        public void LockingOnTheCharactersOwnLegsCutsTheSkatingOfOtherProportions(double legScale)
+        {
+            BvhAnimation walk = LoadWalk();
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(RequireDefaultModel(), requireLazy: true);
+            Assert.That(new WalkLoop(walk, model, 60, true, legScale).Player.Feet!.Rig.Skeleton.IndexOf("LeftUpperLeg"), Is.GreaterThanOrEqualTo(0), "locked on the character's legs (its bone names), not the model's");
+            var (offSpeed, offSamples, offLowest) = Skating(walk, model, 60, 1.0, lockFeet: false, legScale);
+            var (onSpeed, onSamples, onLowest) = Skating(walk, model, 60, 1.0, lockFeet: true, legScale);
+            TestContext.Out.WriteLine($"legs × {legScale}, 60 fps, 1 s transitions, {onSamples} planted samples: skating {onSpeed:F3} locked, {offSpeed:F3} unlocked (× {onSpeed / offSpeed:F2}) leg lengths/s; lowest foot joint {onLowest:F3} locked, {offLowest:F3} unlocked");
+            Assert.That(onSamples, Is.EqualTo(offSamples).And.GreaterThan(100));
+            Assert.That(onSpeed, Is.LessThan(offSpeed), "locked ÷ unlocked foot skating");
+        }
+
         [Test]
         public void ALockedTransitionAllocatesNothingPerFrame()
         {
@@ -68,14 +84,44 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 locked frames");
         }
 
-        /// <summary>Mean skating (leg lengths/s) over the walk's planted samples of every transition's frames, their count, and the lowest shown foot joint (leg lengths above the walk's ground).</summary>
-        private static (double Speed, int Samples, double Lowest) Skating(BvhAnimation walk, Inbetweener model, double fps, double seconds, bool lockFeet)
+        /// <summary>
+        /// Issue 29 on the batched decode path (<see cref="MainThreadScheduler"/>): a model with a contact output hands each
+        /// decoded frame's contacts to the component's locker, which plants feet by them, with 0 bytes per frame; a model
+        /// without one leaves the locker labelling them.
+        /// </summary>
+        [TestCase("tiny-model-contacts.onnx", true)]
+        [TestCase("tiny-model.onnx", false)]
+        public void TheComponentsLockerTakesEachDecodedFramesPredictedContacts(string fixture, bool predicts)
         {
-            var loop = new WalkLoop(walk, model, fps, lockFeet);
-            FootRig rig = FootRig.ForModel(walk.Motion.Skeleton);
+            BvhAnimation walk = LoadWalk();
+            using Inbetweener model = OnnxRuntimeInbetweener.Load(Path.Combine(Fixtures.Directory, fixture), requireLazy: true);
+            var loop = new WalkLoop(walk, model, 60, lockFeet: true);
+            loop.PlayUntil(RequestTimes[0]);
+            loop.Request(1.0);
+            Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
+            loop.Step();
+            int predicted = 0;
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 40; i++)
+            {
+                loop.Step();
+                if (loop.Player.Feet!.LastPosePredicted) predicted++;
+            }
+
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(loop.Player.IsPlaying, Is.True);
+            Assert.That(predicted, Is.EqualTo(predicts ? 40 : 0), "frames locked with the model's predicted contacts");
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated over 40 locked frames");
+        }
+
+        /// <summary>Mean skating (leg lengths/s) over the walk's planted samples of every transition's frames, their count, and the lowest shown foot joint (leg lengths above the walk's ground).</summary>
+        private static (double Speed, int Samples, double Lowest) Skating(BvhAnimation walk, Inbetweener model, double fps, double seconds, bool lockFeet, double legScale = 1)
+        {
+            var loop = new WalkLoop(walk, model, fps, lockFeet, legScale);
+            FootRig rig = loop.Rig;
             int[] feet = { rig.Left.Ankle, rig.Left.Toe, rig.Right.Ankle, rig.Right.Toe };
-            // The walk's ground: the measure's own rule on the whole clip.
-            double ground = FootSkating.GroundLevel(FootSkating.FootPositions(walk.Motion, 0, walk.Motion.FrameCount, feet), feet.Length);
+            // The walk's ground (as the character plays it): the measure's own rule on the whole clip.
+            double ground = loop.Ground(feet);
             double sum = 0;
             int samples = 0;
             double lowest = double.PositiveInfinity;
@@ -100,6 +146,30 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
 
             return (sum / samples, samples, lowest);
+        }
+
+        /// <summary>The model's skeleton as a Unity humanoid (HumanBodyBones names, metres, Unity's handedness, its T-pose as the reference) with thighs, shins and feet <paramref name="legScale"/> × the model's.</summary>
+        private static (SkeletonPoseConverter Map, Skeleton Unity) ScaledHumanoid(Skeleton model, double legScale)
+        {
+            int n = model.JointCount;
+            var names = new List<string>();
+            var positions = new double[3 * n];
+            var rotations = new double[4 * n];
+            Core.Retargeting.ReferencePose tpose = Core.Retargeting.ReferencePose.ModelTPose(model);
+            for (int j = 0; j < n; j++)
+            {
+                IReadOnlyList<string> chain = Core.Retargeting.JointMap.UnityHumanoid.SourceChain(model.Names[j])!;
+                names.Add(chain[chain.Count - 1]);
+                string name = model.Names[j];
+                bool leg = (name.EndsWith("Leg", StringComparison.Ordinal) && !name.EndsWith("UpLeg", StringComparison.Ordinal)) || name.EndsWith("Foot", StringComparison.Ordinal) || name.EndsWith("Toe", StringComparison.Ordinal);
+                Core.Retargeting.Handedness.PositionToUnity((leg ? 0.01 * legScale : 0.01) * Vector3D.Read(model.OffsetSpan, 3 * j)).Write(positions, 3 * j);
+                IReadOnlyList<double> q = tpose.LocalRotations;
+                Core.Retargeting.Handedness.RotationToUnity(new QuaternionD(q[4 * j], q[4 * j + 1], q[4 * j + 2], q[4 * j + 3])).Write(rotations, 4 * j);
+            }
+
+            var parents = new int[n];
+            for (int j = 0; j < n; j++) parents[j] = model.Parents[j];
+            return (SkeletonPoseConverter.FromUnity(names, parents, positions, rotations, model, "scaled humanoid"), new Skeleton(names.ToArray(), parents, positions));
         }
 
         private static BvhAnimation LoadWalk()
@@ -131,12 +201,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double[] _localPositions;
             private readonly double[] _modelRoot = new double[3];
             private readonly double[] _modelRotations;
-            private readonly NamePoseConverter _map;
+            private readonly IPoseConverter _map;
+            private readonly Skeleton? _character; // a scaled humanoid's skeleton in Unity's space, or null: the model's
             private readonly MainThreadScheduler _scheduler;
             private ArrayPoseStream _stream;
             private int _frame;
 
-            public WalkLoop(BvhAnimation walk, Inbetweener model, double fps, bool lockFeet)
+            public WalkLoop(BvhAnimation walk, Inbetweener model, double fps, bool lockFeet, double legScale = 1)
             {
                 _clip = walk.Motion;
                 _fps = fps;
@@ -147,7 +218,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _globalRotations = new double[4 * j];
                 _localPositions = new double[3 * j];
                 _modelRotations = new double[4 * j];
-                _map = new NamePoseConverter(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
+                if (legScale == 1)
+                {
+                    _map = new NamePoseConverter(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
+                    Rig = FootRig.ForModel(_clip.Skeleton);
+                }
+                else
+                {
+                    // A humanoid whose thighs, shins and feet are legScale × the model's (Unity's space, metres): the walk
+                    // retargeted onto it is its own animation, and its feet are measured on its own legs.
+                    (SkeletonPoseConverter map, Skeleton unity) = ScaledHumanoid(c.Skeleton, legScale);
+                    _map = map;
+                    _character = unity;
+                    FootRig source = FootRig.ForSource(map.Map);
+                    Rig = new FootRig(unity, source.Left, source.Right, source.LegLength);
+                }
+
                 _scheduler = new MainThreadScheduler(model);
                 Player = new TransitionPlayer(_map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
                 _stream = new ArrayPoseStream(new double[3], new double[4 * j]);
@@ -155,6 +241,23 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
 
             public TransitionPlayer Player { get; }
+
+            /// <summary>The legs feet are measured on: the model's, or the scaled humanoid's (Unity's space, its leg length).</summary>
+            public FootRig Rig { get; }
+
+            /// <summary>The walk's ground as the character plays it (the measure's rule over the whole walk).</summary>
+            public double Ground(int[] feet)
+            {
+                var all = new List<double>();
+                var none = new List<double>();
+                for (int f = 0; f < _clip.FrameCount; f++)
+                {
+                    Sample(f * _clip.FrameTime, _root, _rotations);
+                    AddFeet(_root, _rotations, all, feet);
+                }
+
+                return FootSkating.GroundLevel(all.ToArray(), feet.Length);
+            }
 
             public double Time => _frame / _fps;
 
@@ -188,6 +291,20 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             private void AddFeet(double[] root, double[] rotations, List<double> into, int[] feet)
             {
+                if (_character != null)
+                {
+                    // On the character's own legs, in Unity's space (heights and horizontal speeds as in its source space).
+                    _character.OffsetSpan.CopyTo(_localPositions);
+                    for (int k = 0; k < 3; k++) _localPositions[k] = root[k];
+                    Core.Kinematics.ForwardKinematics.ComputeFrame(_character.ParentSpan, _localPositions, Vector3D.Read(_localPositions, 0), rotations, _globals, _globalRotations);
+                    foreach (int f in feet)
+                    {
+                        for (int k = 0; k < 3; k++) into.Add(_globals[3 * f + k]);
+                    }
+
+                    return;
+                }
+
                 Skeleton s = _clip.Skeleton;
                 _map.ToModel(root, rotations, _modelRoot, _modelRotations);
                 s.OffsetSpan.CopyTo(_localPositions);

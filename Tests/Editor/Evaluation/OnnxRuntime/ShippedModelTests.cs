@@ -42,9 +42,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Transition whole = c.ToTransition(model.Contract.Skeleton);
             model.Inbetween(whole);
             Transition lazy = c.ToTransition(model.Contract.Skeleton);
-            LazyInbetweener decoder = model.CreateLazy(c.PastFrames, c.Gap);
-            decoder.Begin(lazy);
-            for (int k = 0; k < c.Gap; k++) decoder.DecodeFrame(k);
+            LazyInbetweener lazyInbetweener = model.CreateLazy(c.PastFrames, c.MissingFrames);
+            lazyInbetweener.Begin(lazy);
+            for (int k = 0; k < c.MissingFrames; k++) lazyInbetweener.DecodeFrame(k);
             Assert.That(GoldenParityTests.MaxAbs(lazy.LocalRotations, whole.LocalRotations), Is.LessThan(1e-5));
             Assert.That(GoldenParityTests.MaxAbs(lazy.RootPositions, whole.RootPositions) * model.Contract.UnitScale, Is.LessThan(1e-5));
         }

@@ -5,8 +5,8 @@ using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.Bvh
 {
-    /// <summary>Hostile inputs the reader must survive (issue 8): deep nesting, CR-only files, huge names.</summary>
-    public class BvhReaderHardeningTests
+    /// <summary>Unusual files the reader must read or refuse well (issue 8): deep nesting beyond the call stack, an unclosed deep chain, CR-only line endings, huge names.</summary>
+    public class BvhReaderUnusualFileTests
     {
         private static string DeepChain(int depth)
         {

@@ -1,0 +1,112 @@
+using System;
+using DeltaInterpolator.Core.Characters;
+using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Tests.Playback;
+
+namespace DeltaInterpolator.Tests.OnnxRuntime
+{
+    /// <summary>
+    /// One character of a simulated game loop, driven the way MotionInbetweener drives it: what the engine read goes
+    /// into one <see cref="TransitionCharacter.Frame"/> call, the controller's pose is written, and the frame's pose
+    /// is blended over it into the pose shown (the animation job's output), which the next frame hands back. Root
+    /// motion is off and the character stands at the world's origin, so the stream's space is the character's.
+    /// </summary>
+    /// <remarks>
+    /// The frame's owner pumps the scheduler (once per rendered frame for every character), not this type. Requests
+    /// hand over the pose shown first (<see cref="TransitionCharacter.Showed"/>), as the component does. A frame
+    /// allocates nothing, so crowds of these measure the steady state.
+    /// </remarks>
+    internal sealed class PlayingCharacter
+    {
+        /// <summary>Where the character stands: the world's origin, unrotated, unscaled.</summary>
+        private static readonly CharacterPlace Origin = new CharacterPlace { RotationW = 1, Scale = 1 };
+
+        private readonly TransitionCharacter _character;
+        private readonly Action<double, double[], double[]> _controller;
+        private readonly double[] _shownPose;
+        private readonly double[] _sampledTarget;
+        private ArrayPoseStream _stream;
+        private bool _sampled;
+
+        /// <param name="converter">The character's bones ↔ the model's joints.</param>
+        /// <param name="scheduler">The scheduler the frame's owner pumps.</param>
+        /// <param name="settings">The character's playback settings.</param>
+        /// <param name="controller">The controller's pose at a time (its own animation): (time, root, rotations).</param>
+        public PlayingCharacter(IPoseConverter converter, TransitionScheduler scheduler, PlaybackSettings settings, Action<double, double[], double[]> controller)
+        {
+            _controller = controller;
+            _character = new TransitionCharacter(converter, scheduler, settings, RootFrame.Identity, "tiny", "ONNX Runtime");
+            int bones = converter.BoneCount;
+            _stream = new ArrayPoseStream(new double[3], new double[4 * bones]);
+            Shown = new ArrayPoseStream(new double[3], new double[4 * bones]);
+            _shownPose = new double[_character.PoseLength];
+            _sampledTarget = new double[_character.PoseLength];
+            // The pose the engine shows before the first frame: the controller's at time 0.
+            controller(0, Shown.Root, Shown.Rotations);
+        }
+
+        /// <summary>The character's transitions (history, requests, events, the frame's pose and weight).</summary>
+        public TransitionPlayer Player => _character.Player;
+
+        /// <summary>The character's clock: the time of its last frame.</summary>
+        public double Time => _character.Clock.Time;
+
+        /// <summary>What the last frame showed (the animation job's output).</summary>
+        public ArrayPoseStream Shown { get; }
+
+        /// <summary>
+        /// One rendered frame <paramref name="deltaTime"/> seconds after the last: the character's frame, the
+        /// controller's pose at the new time, the transition blended over it into <see cref="Shown"/>.
+        /// </summary>
+        public void Frame(double deltaTime)
+        {
+            var input = new CharacterFrameInput
+            {
+                Callback = FrameCallback.Update,
+                ClockMode = AnimationClockMode.Scaled,
+                DeltaTime = deltaTime,
+                UnscaledDeltaTime = deltaTime,
+                FixedDeltaTime = 0.02,
+                ApplyRootMotion = false,
+                Place = Origin,
+            };
+            CharacterFrameOutput frame = _character.Frame(input, ShownPose(), _sampled ? _sampledTarget : ReadOnlySpan<double>.Empty);
+            _sampled = false;
+            // A plain check (NUnit's Assert would allocate): every frame here advances the clock and plays.
+            if (!frame.Played) throw new InvalidOperationException("a frame did not play: " + frame.FailureReason, frame.Error);
+            _controller(Time, _stream.Root, _stream.Rotations);
+            var pose = new ReadOnlySpan<double>(frame.Pose);
+            PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), Shown.Root, Shown.Rotations);
+        }
+
+        /// <summary>A transition to a pose given in the character's space, from the pose shown, as the component requests one.</summary>
+        public int RequestTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double seconds)
+        {
+            _character.Showed(Origin, false, ShownPose());
+            return _character.RequestTransition(targetRoot, targetRotations, seconds);
+        }
+
+        /// <summary>A transition whose target the engine samples later (<see cref="Sampled"/>), as the component requests a clip's pose.</summary>
+        public int DeferTransition(double seconds)
+        {
+            _character.Showed(Origin, false, ShownPose());
+            return _character.DeferTransition(seconds);
+        }
+
+        /// <summary>The engine sampled a deferred request's target: the next <see cref="Frame"/> starts it.</summary>
+        public void Sampled(double[] targetRoot, double[] targetRotations)
+        {
+            targetRoot.CopyTo(_sampledTarget, 0);
+            targetRotations.CopyTo(_sampledTarget, 3);
+            _sampled = true;
+        }
+
+        private double[] ShownPose()
+        {
+            Shown.Root.CopyTo(_shownPose, 0);
+            Shown.Rotations.CopyTo(_shownPose, 3);
+            return _shownPose;
+        }
+    }
+}
