@@ -1,4 +1,5 @@
 #nullable enable
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Clips;

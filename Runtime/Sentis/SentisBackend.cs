@@ -1,4 +1,5 @@
 #nullable enable
+using DeltaInterpolator.Core.Scheduling;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -23,7 +24,7 @@ namespace DeltaInterpolator.Sentis
     /// the real tensors on every run (a mismatch throws).</para>
     /// <para>On <see cref="BackendType.CPU"/> (the default) outputs are read in place, without allocation
     /// in this class. Bindings are <see cref="IAsyncInferenceBinding"/>s: Core's frame scheduler
-    /// (<c>MainThreadDecoder</c>) schedules a run in one frame (<c>Worker.Schedule</c>, then
+    /// (<c>MainThreadScheduler</c>) schedules a run in one frame (<c>Worker.Schedule</c>, then
     /// <c>Tensor.ReadbackRequest</c> on each output) and collects it in a later frame once
     /// <c>IsReadbackRequestDone</c>, so the main thread never waits for the Burst jobs or the GPU;
     /// <see cref="IInferenceBinding.Run"/> still runs and reads back at once. A scheduled run reads back

@@ -64,16 +64,11 @@ namespace DeltaInterpolator.Unity
             _requests[0] = ++_request;
         }
 
-        /// <summary>Copies the pose of the latest <see cref="Sample"/> once the animation evaluation has read it.</summary>
-        /// <returns>False while it has not been read (e.g. the Animator was culled and did not evaluate).</returns>
-        public bool TryRead(double[] root, double[] rotations)
-        {
-            if (_request == 0 || _requests[1] != _request) return false;
-            ReadOnlySpan<double> t = _target.AsReadOnlySpan();
-            t.Slice(0, 3).CopyTo(root);
-            t.Slice(3).CopyTo(rotations);
-            return true;
-        }
+        /// <summary>
+        /// The pose of the latest <see cref="Sample"/> (root position, then bones × 4 rotations) once the animation
+        /// evaluation has read it; empty while it has not (e.g. the Animator was culled and did not evaluate).
+        /// </summary>
+        public ReadOnlySpan<double> Read() => _request != 0 && _requests[1] == _request ? _target.AsReadOnlySpan() : default;
 
         public void Dispose()
         {

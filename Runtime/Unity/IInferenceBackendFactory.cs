@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Inference;
 
 namespace DeltaInterpolator.Unity
@@ -15,7 +16,7 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// True when its backends may run on a thread other than Unity's main thread; then the network
-        /// runs on a worker thread (<c>InferenceWorker</c>), otherwise lazily on the main thread.
+        /// runs on a worker thread (<c>WorkerThreadScheduler</c>), otherwise lazily on the main thread.
         /// </summary>
         bool RunsOffMainThread { get; }
 

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using BenchmarkDotNet.Attributes;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Evaluation.Speed;
@@ -19,7 +20,7 @@ namespace DeltaInterpolator.Benchmarks
     [MemoryDiagnoser]
     public class CrowdBenchmarks
     {
-        private MainThreadDecoder _decoder = null!;
+        private MainThreadScheduler _decoder = null!;
         private Crowd _crowd = null!;
 
         /// <summary>Characters in the crowd.</summary>
@@ -34,7 +35,7 @@ namespace DeltaInterpolator.Benchmarks
         public void Setup()
         {
             var model = OnnxRuntimeInbetweener.Load(PlaybackSetup.ShippedModel, requireLazy: true);
-            _decoder = new MainThreadDecoder(model, Batched ? 256 : 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
+            _decoder = new MainThreadScheduler(model, Batched ? 256 : 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
             _crowd = new Crowd(_decoder, Characters);
             _crowd.Warm();
             // A first round creates the batch tensors and bindings.

@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -11,7 +13,7 @@ namespace DeltaInterpolator.Benchmarks
 {
     /// <summary>
     /// The main-thread cost of the Unity component per rendered frame, for 1, 16 and 64 characters of 22
-    /// bones (the shipped LaFAN1 model on ONNX Runtime, one shared <see cref="InferenceWorker"/>): every
+    /// bones (the shipped LaFAN1 model on ONNX Runtime, one shared <see cref="WorkerThreadScheduler"/>): every
     /// character mid-transition, so each frame interpolates between decoded model frames, converts to
     /// the character's space, blends over the animation stream with a weight between 0 and 1 (the
     /// costliest case: two slerps per bone) and records the pose shown. Divide by Characters for the
@@ -24,7 +26,7 @@ namespace DeltaInterpolator.Benchmarks
         private const double FrameTime = 1.0 / 144;
         private const double Duration = 1.0;
         private readonly List<TransitionPlayer> _players = new List<TransitionPlayer>();
-        private InferenceWorker _worker = null!;
+        private WorkerThreadScheduler _worker = null!;
         private Stream[] _streams = null!;
         private double _start;
         private int _frame;
@@ -36,7 +38,7 @@ namespace DeltaInterpolator.Benchmarks
         [GlobalSetup]
         public void Setup()
         {
-            _worker = new InferenceWorker(OnnxRuntimeInbetweener.Load(PlaybackSetup.ShippedModel, requireLazy: true));
+            _worker = new WorkerThreadScheduler(OnnxRuntimeInbetweener.Load(PlaybackSetup.ShippedModel, requireLazy: true));
             _streams = new Stream[Characters];
             for (int c = 0; c < Characters; c++)
             {
@@ -68,13 +70,13 @@ namespace DeltaInterpolator.Benchmarks
     /// <summary>
     /// The main-thread cost of <see cref="TransitionPlayer.RequestTransition"/> for a 22-bone character: the
     /// history resampled to 30 fps, converted to the model's space, handed to the decoder. With the
-    /// <see cref="InferenceWorker"/> the network runs on its thread; with the <see cref="MainThreadDecoder"/>
+    /// <see cref="WorkerThreadScheduler"/> the network runs on its thread; with the <see cref="MainThreadScheduler"/>
     /// the request also runs the keys graph on the calling thread (for comparison).
     /// </summary>
     [MemoryDiagnoser]
     public class RequestBenchmarks
     {
-        private TransitionDecoder _decoder = null!;
+        private TransitionScheduler _decoder = null!;
         private TransitionPlayer _player = null!;
         private Stream _stream;
 
@@ -86,7 +88,7 @@ namespace DeltaInterpolator.Benchmarks
         public void Setup()
         {
             Inbetweener model = OnnxRuntimeInbetweener.Load(PlaybackSetup.ShippedModel, requireLazy: true);
-            _decoder = Decoder == "worker" ? new InferenceWorker(model) : new MainThreadDecoder(model);
+            _decoder = Decoder == "worker" ? new WorkerThreadScheduler(model) : new MainThreadScheduler(model);
             _player = PlaybackSetup.Player(_decoder, new PlaybackSettings(), 0, out _stream);
         }
 
@@ -144,10 +146,10 @@ namespace DeltaInterpolator.Benchmarks
         }
 
         /// <summary>A player for a character with the model's bones, its history filled with 1 s of motion at 144 fps.</summary>
-        public static TransitionPlayer Player(TransitionDecoder decoder, PlaybackSettings settings, int seed, out Stream stream)
+        public static TransitionPlayer Player(TransitionScheduler decoder, PlaybackSettings settings, int seed, out Stream stream)
         {
             ModelContract contract = decoder.Contract;
-            var map = new NameJointMap(contract.Skeleton, contract.UnitScale, contract.Skeleton.Names);
+            var map = new NamePoseConverter(contract.Skeleton, contract.UnitScale, contract.Skeleton.Names);
             var player = new TransitionPlayer(map, decoder, settings);
             int bones = map.BoneCount;
             stream = new Stream { Root = new double[3], Rotations = new double[4 * bones] };

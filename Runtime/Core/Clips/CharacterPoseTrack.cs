@@ -1,6 +1,6 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Core.Clips
     /// rig bone's local rotation (w, x, y, z), left-handed), written into a <see cref="MotionClip"/> on the
     /// character's own skeleton (<see cref="CharacterRig.Skeleton"/>: right-handed, armature applied to the
     /// root, offsets in the character's units) at their frame indices; and the way back,
-    /// <see cref="ReadUnityPose"/>. The same conversion as the component's <see cref="SkeletonJointMap"/>
+    /// <see cref="ReadUnityPose"/>. The same conversion as the component's <see cref="SkeletonPoseConverter"/>
     /// before and after its <see cref="SkeletonMap"/>, so the editor baker and the component see one rig.
     /// Frames without a key keep the reference pose until a bake fills them.
     /// </summary>

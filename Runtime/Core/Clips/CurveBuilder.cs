@@ -1,6 +1,6 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;

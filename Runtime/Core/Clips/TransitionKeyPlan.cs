@@ -10,10 +10,10 @@ namespace DeltaInterpolator.Core.Clips
     /// </summary>
     public sealed class TransitionKeyPlan
     {
-        private TransitionKeyPlan(int pastFrames, int gapFrames, double[] fromTimes, double toTime, double frameRate)
+        private TransitionKeyPlan(int pastFrames, int missingFrames, double[] fromTimes, double toTime, double frameRate)
         {
             PastFrames = pastFrames;
-            GapFrames = gapFrames;
+            MissingFrames = missingFrames;
             FromTimes = fromTimes;
             ToTime = toTime;
             FrameRate = frameRate;
@@ -23,7 +23,7 @@ namespace DeltaInterpolator.Core.Clips
         public int PastFrames { get; }
 
         /// <summary>Number of missing frames n.</summary>
-        public int GapFrames { get; }
+        public int MissingFrames { get; }
 
         /// <summary>Time (seconds) in the first clip of each past key 0..P−1, ascending.</summary>
         public double[] FromTimes { get; }
@@ -35,28 +35,28 @@ namespace DeltaInterpolator.Core.Clips
         public double FrameRate { get; }
 
         /// <summary>Frame index of the target key, P + n.</summary>
-        public int TargetFrame => PastFrames + GapFrames;
+        public int TargetFrame => PastFrames + MissingFrames;
 
         /// <summary>Frames of the baked clip: P + n + 1.</summary>
-        public int FrameCount => PastFrames + GapFrames + 1;
+        public int FrameCount => PastFrames + MissingFrames + 1;
 
         /// <summary>
         /// Plans a transition leaving the first clip at <paramref name="fromTime"/> and arriving in the
-        /// second at <paramref name="toTime"/> after <paramref name="gapFrames"/> in-between frames.
+        /// second at <paramref name="toTime"/> after <paramref name="missingFrames"/> in-between frames.
         /// </summary>
         /// <param name="fromTime">Transition point in the first clip (seconds): the last past key.</param>
         /// <param name="toTime">Target time in the second clip (seconds).</param>
         /// <param name="pastFrames">Past keys wanted (the model's trained maximum, e.g. 10); fewer when the first clip is shorter.</param>
-        /// <param name="gapFrames">Missing frames n (≥ 1).</param>
+        /// <param name="missingFrames">Missing frames n (≥ 1).</param>
         /// <param name="frameRate">The model's frame rate.</param>
         /// <exception cref="ArgumentOutOfRangeException">A count or time is out of range.</exception>
-        public static TransitionKeyPlan Create(double fromTime, double toTime, int pastFrames, int gapFrames, double frameRate)
+        public static TransitionKeyPlan Create(double fromTime, double toTime, int pastFrames, int missingFrames, double frameRate)
         {
             if (!(frameRate > 0) || double.IsInfinity(frameRate)) throw new ArgumentOutOfRangeException(nameof(frameRate), "the frame rate must be a positive number of frames per second");
             if (!(fromTime >= 0) || double.IsInfinity(fromTime)) throw new ArgumentOutOfRangeException(nameof(fromTime), "the transition point must be a time ≥ 0 in the first clip");
             if (!(toTime >= 0) || double.IsInfinity(toTime)) throw new ArgumentOutOfRangeException(nameof(toTime), "the target must be a time ≥ 0 in the second clip");
             if (pastFrames < 1) throw new ArgumentOutOfRangeException(nameof(pastFrames), "at least one past key is needed");
-            if (gapFrames < 1) throw new ArgumentOutOfRangeException(nameof(gapFrames), "at least one missing frame is needed");
+            if (missingFrames < 1) throw new ArgumentOutOfRangeException(nameof(missingFrames), "at least one missing frame is needed");
 
             // Past keys step back one model frame each from the transition point; none before the clip starts.
             int available = (int)Math.Floor(fromTime * frameRate + 1e-9) + 1;
@@ -67,7 +67,7 @@ namespace DeltaInterpolator.Core.Clips
                 times[k] = Math.Max(0, fromTime - (p - 1 - k) / frameRate);
             }
 
-            return new TransitionKeyPlan(p, gapFrames, times, toTime, frameRate);
+            return new TransitionKeyPlan(p, missingFrames, times, toTime, frameRate);
         }
     }
 }

@@ -25,9 +25,9 @@ namespace DeltaInterpolator.Core.Inference
         private readonly IInferenceBackend _whole;
         private readonly IInferenceBackend? _keys;
         private readonly IInferenceBackend? _frame;
-        private readonly KeyFeatureBuilder _features;
+        private readonly RowDecoder _rows;
         private readonly Dictionary<long, Workspace> _workspaces = new Dictionary<long, Workspace>();
-        private readonly List<LazyDecoder> _lazy = new List<LazyDecoder>();
+        private readonly List<LazyInbetweener> _lazy = new List<LazyInbetweener>();
         private Skeleton? _checkedSkeleton;
         private Workspace? _last;
         private bool _disposed;
@@ -61,7 +61,7 @@ namespace DeltaInterpolator.Core.Inference
                     _frame = frame;
                 }
 
-                _features = new KeyFeatureBuilder(Contract);
+                _rows = new RowDecoder(Contract);
                 Probe();
             }
             catch
@@ -113,7 +113,7 @@ namespace DeltaInterpolator.Core.Inference
             Workspace w = Prepare(transition);
             w.Binding.Run();
             _last = w;
-            LastLocalization = w.Localization;
+            LastLocalization = w.Keys.Localization;
             for (int k = 0; k < transition.MissingFrames; k++)
             {
                 DecodeFrame(transition, w, k, k);
@@ -133,14 +133,14 @@ namespace DeltaInterpolator.Core.Inference
 
         /// <summary>
         /// A reusable lazy decoder for transitions of P past keys and n missing frames: it encodes the
-        /// keys once per transition (<see cref="LazyDecoder.Begin"/>) and decodes frames one at a time
-        /// (<see cref="LazyDecoder.DecodeFrame"/>), each costing a fraction of a whole transition.
+        /// keys once per transition (<see cref="LazyInbetweener.Begin"/>) and decodes frames one at a time
+        /// (<see cref="LazyInbetweener.DecodeFrame"/>), each costing a fraction of a whole transition.
         /// Owned by this inbetweener (disposed with it): create one per shape and reuse it for every
         /// transition of that shape, since each holds its own buffers and backend bindings until
         /// <see cref="Dispose"/>.
         /// </summary>
         /// <exception cref="InvalidOperationException">The lazy graphs were not loaded.</exception>
-        public LazyDecoder CreateLazy(int pastFrames, int missingFrames)
+        public LazyInbetweener CreateLazy(int pastFrames, int missingFrames)
         {
             ThrowIfDisposed();
             if (_keys == null || _frame == null)
@@ -149,7 +149,7 @@ namespace DeltaInterpolator.Core.Inference
             }
 
             CheckLength(pastFrames, missingFrames);
-            var lazy = new LazyDecoder(this, _keys, _frame, pastFrames, missingFrames);
+            var lazy = new LazyInbetweener(this, _keys, _frame, pastFrames, missingFrames);
             _lazy.Add(lazy);
             return lazy;
         }
@@ -159,7 +159,7 @@ namespace DeltaInterpolator.Core.Inference
         {
             if (_disposed) return;
             _disposed = true;
-            foreach (LazyDecoder l in _lazy) l.DisposeBindings();
+            foreach (LazyInbetweener l in _lazy) l.DisposeBindings();
             foreach (Workspace w in _workspaces.Values) w.Binding.Dispose();
             _workspaces.Clear();
             _whole.Dispose();
@@ -167,13 +167,11 @@ namespace DeltaInterpolator.Core.Inference
             _frame?.Dispose();
         }
 
-        internal KeyFeatureBuilder Features => _features;
-
-        /// <summary>The keys graph (lazy decoding), or null.</summary>
-        internal IInferenceBackend? KeysBackend => _keys;
+        /// <summary>The keys graph (lazy decoding), or null: the schedulers bind it for their batched runs.</summary>
+        public IInferenceBackend? KeysBackend => _keys;
 
         /// <summary>The frame graph (lazy decoding), or null.</summary>
-        internal IInferenceBackend? FrameBackend => _frame;
+        public IInferenceBackend? FrameBackend => _frame;
 
         internal void CheckSkeleton(Skeleton skeleton)
         {
@@ -192,91 +190,9 @@ namespace DeltaInterpolator.Core.Inference
             if (error != null) throw new ArgumentException(error.Message + "; " + error.Remedy);
         }
 
-        /// <summary>
-        /// Localizes the keys and builds their features, common to whole and lazy runs (the frame indices
-        /// and gap length were written once per shape by <see cref="GraphTensors"/>); also
-        /// prepares each joint's slerp between the last past key and the target (<paramref name="pairs"/>,
-        /// one per joint) once, for every missing frame's baseline.
-        /// </summary>
-        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, InferenceTensor keyFeatures) =>
-            LocalizeAndBuild(t, localRoot, localRotations, pairs, keyFeatures.Floats);
-
-        /// <summary>As above, writing the K × 9J features into <paramref name="keyFeatures"/> (a row of a batch, or a request's own buffer).</summary>
-        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, Span<float> keyFeatures) =>
-            LocalizeAndBuild(t, localRoot, localRotations, pairs, keyFeatures, _features);
-
-        /// <summary>As above with another thread's own feature builder (the builder holds scratch buffers).</summary>
-        internal Localization LocalizeAndBuild(Transition t, double[] localRoot, double[] localRotations, SlerpPair[] pairs, Span<float> keyFeatures, KeyFeatureBuilder features)
-        {
-            int keys = t.KeyFrameCount;
-            int reference = t.PastFrames - 1;
-            Localization loc = Localizer.Localize(Contract, t.KeyRootPositions, t.KeyLocalRotations, keys, reference, localRoot, localRotations);
-            features.Build(localRoot, localRotations, keys, reference, keyFeatures);
-            int jc = Contract.JointCount;
-            int target = t.PastFrames;
-            for (int j = 0; j < jc; j++)
-            {
-                pairs[j] = new SlerpPair(
-                    Quaternions.Normalize(QuaternionD.Read(localRotations, (reference * jc + j) * 4)),
-                    Quaternions.Normalize(QuaternionD.Read(localRotations, (target * jc + j) * 4)));
-            }
-
-            return loc;
-        }
-
-        /// <summary>
-        /// Decodes network output row <paramref name="row"/> into missing frame <paramref name="k"/> of the
-        /// transition (world space). Shared by the whole and the lazy paths, so both are identical maths.
-        /// </summary>
-        internal void Decode(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, float[] rootDelta, float[] rotationDelta, int row, int k) =>
-            Decode(t, loc, localRoot, pairs, rootDelta, rotationDelta, row, k, t.RootPositions, t.LocalRotations);
-
-        /// <summary>As above, into <paramref name="roots"/> (n × 3) and <paramref name="rotations"/> (n × J × 4) instead of the transition's own buffers.</summary>
-        internal void Decode(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, float[] rootDelta, float[] rotationDelta, int row, int k, double[] roots, double[] rotations)
-        {
-            int jc = Contract.JointCount;
-            int n = t.MissingFrames;
-            int last = t.PastFrames - 1;
-            int target = t.PastFrames;
-            OutputDeltaMode mode = Contract.OutputDeltaMode;
-            double a = DeltaBaseline.Weight(k, n);
-            Vector3D baseRoot = DeltaBaseline.RootPosition(mode, Vector3D.Read(localRoot, 3 * last), Vector3D.Read(localRoot, 3 * target), a);
-            Vector3D root = OutputDecoder.RootPosition(baseRoot, new ReadOnlySpan<float>(rootDelta, 3 * row, 3));
-            loc.UnlocalizePosition(root).Write(roots, 3 * k);
-            double[] output = rotations;
-            for (int j = 0; j < jc; j++)
-            {
-                QuaternionD baseRotation = DeltaBaseline.Rotation(mode, pairs[j], a);
-                QuaternionD q = OutputDecoder.Rotation(mode, baseRotation, new ReadOnlySpan<float>(rotationDelta, (row * jc + j) * 6, 6));
-                if (j == 0) q = loc.UnlocalizeRootRotation(q);
-                q.Write(output, (k * jc + j) * 4);
-            }
-        }
-
-        /// <summary>
-        /// The SLERP pose of missing frame <paramref name="k"/> of the same request, world space: the
-        /// baseline the network's Δ is added to (output Δ-mode <c>slerp</c>; other modes get SLERP too), what
-        /// a frame shows while its network output has not arrived. Allocation-free.
-        /// </summary>
-        internal void Baseline(Transition t, Localization loc, double[] localRoot, SlerpPair[] pairs, int k, double[] roots, double[] rotations)
-        {
-            int jc = Contract.JointCount;
-            int last = t.PastFrames - 1;
-            int target = t.PastFrames;
-            double a = DeltaBaseline.Weight(k, t.MissingFrames);
-            Vector3D root = DeltaBaseline.RootPosition(OutputDeltaMode.Slerp, Vector3D.Read(localRoot, 3 * last), Vector3D.Read(localRoot, 3 * target), a);
-            loc.UnlocalizePosition(root).Write(roots, 3 * k);
-            for (int j = 0; j < jc; j++)
-            {
-                QuaternionD q = DeltaBaseline.Rotation(OutputDeltaMode.Slerp, pairs[j], a);
-                if (j == 0) q = loc.UnlocalizeRootRotation(q);
-                q.Write(rotations, (k * jc + j) * 4);
-            }
-        }
-
         private void DecodeFrame(Transition t, Workspace w, int row, int k)
         {
-            Decode(t, w.Localization, w.LocalRoot, w.Pairs, w.Tensors.RootPositionDelta!.Floats!, w.Tensors.Rotation6DDelta!.Floats!, row, k);
+            _rows.Decode(t, w.Keys, OutputRow.Of(w.Tensors, row, Contract.JointCount), k, t.RootPositions, t.LocalRotations);
         }
 
         private Workspace Prepare(Transition t)
@@ -292,7 +208,7 @@ namespace DeltaInterpolator.Core.Inference
                 _workspaces.Add(key, w);
             }
 
-            w.Localization = LocalizeAndBuild(t, w.LocalRoot, w.LocalRotations, w.Pairs, w.Tensors.KeyFeatures!);
+            _rows.Localize(t, w.Keys, w.Tensors.KeyFeatures!.Floats);
             return w;
         }
 
@@ -339,22 +255,16 @@ namespace DeltaInterpolator.Core.Inference
             public Workspace(Inbetweener owner, IInferenceBackend backend, int pastFrames, int missingFrames)
             {
                 int jc = owner.Contract.JointCount;
-                int keys = pastFrames + 1;
-                LocalRoot = new double[keys * 3];
-                LocalRotations = new double[keys * jc * 4];
-                Pairs = new SlerpPair[jc];
+                Keys = new LocalizedKeys(owner.Contract, pastFrames);
                 GlobalRotations = new double[missingFrames * jc * 4];
                 Tensors = GraphTensors.Create(owner.Contract, ModelGraphKind.Whole, pastFrames, missingFrames, missingFrames);
                 Binding = Tensors.Bind(backend);
             }
 
-            public double[] LocalRoot { get; }
-            public double[] LocalRotations { get; }
-            public SlerpPair[] Pairs { get; }
+            public LocalizedKeys Keys { get; }
             public double[] GlobalRotations { get; }
             public GraphTensors Tensors { get; }
             public IInferenceBinding Binding { get; }
-            public Localization Localization { get; set; }
 
             public void Dispose() => Binding.Dispose();
         }

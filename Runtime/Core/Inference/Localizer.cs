@@ -8,7 +8,7 @@ namespace DeltaInterpolator.Core.Inference
     /// The rigid change of frame that puts a request in the network's canonical frame: the yaw that turns
     /// the last past key to face the model's forward axis, and the ground point under its root.
     /// </summary>
-    internal readonly struct Localization
+    public readonly struct Localization
     {
         /// <summary>Creates a localization.</summary>
         public Localization(QuaternionD yaw, Vector3D origin, double unitScale)

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using System;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Rotations;
@@ -68,15 +69,15 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>
         /// Computes the pose at model time a + f into <see cref="Root"/> and <see cref="Rotations"/>.
         /// </summary>
-        /// <param name="job">The request (SLERP frames, network frames below <see cref="TransitionJob.Decoded"/>).</param>
+        /// <param name="request">The request (SLERP frames, network frames below <see cref="TransitionRequest.Decoded"/>).</param>
         /// <param name="a">Model frame (0: last past key … G − 1).</param>
         /// <param name="f">Fraction toward frame a + 1.</param>
         /// <param name="available">True when the network's frames a and a + 1 are decoded.</param>
         /// <returns>True when the pose equals the last one shown although the model time moved (a frozen frame).</returns>
-        public bool Show(TransitionJob job, int a, double f, bool available)
+        public bool Show(TransitionRequest request, int a, double f, bool available)
         {
-            int decoded = job.Decoded;
-            Interpolate(job, a, f, false, _sRoot, _s);
+            int decoded = request.Decoded;
+            Interpolate(request, a, f, false, _sRoot, _s);
             bool haveModel = available || (Weight > 0 && decoded > 0);
             if (!haveModel)
             {
@@ -87,11 +88,11 @@ namespace DeltaInterpolator.Core.Playback
             {
                 if (available)
                 {
-                    Interpolate(job, a, f, true, _mRoot, _m);
+                    Interpolate(request, a, f, true, _mRoot, _m);
                 }
                 else
                 {
-                    CarryCorrection(job, decoded);
+                    CarryCorrection(request, decoded);
                 }
 
                 double target = available ? 1 : 0;
@@ -102,7 +103,7 @@ namespace DeltaInterpolator.Core.Playback
                 }
                 else
                 {
-                    Allowances(job, decoded, available);
+                    Allowances(request, decoded, available);
                     Weight = Choose(target);
                     Compose(Weight, Rotations);
                     for (int c = 0; c < 3; c++) Root[c] = _sRoot[c] + Weight * (_mRoot[c] - _sRoot[c]);
@@ -137,13 +138,13 @@ namespace DeltaInterpolator.Core.Playback
         /// Each joint's allowed turn from the last pose shown: TurnFactor × the larger of S's turn and (when
         /// the network's frames are there) M's turn since the last frame, plus TurnSlack.
         /// </summary>
-        private void Allowances(TransitionJob job, int decoded, bool available)
+        private void Allowances(TransitionRequest request, int decoded, bool available)
         {
-            Interpolate(job, _prevA, _prevF, false, null, _scratch);
+            Interpolate(request, _prevA, _prevF, false, null, _scratch);
             for (int j = 0; j < _joints; j++) _allow[j] = Angle(_scratch, _s, j);
             if (available)
             {
-                Interpolate(job, _prevA, _prevF, true, null, _scratch);
+                Interpolate(request, _prevA, _prevF, true, null, _scratch);
                 for (int j = 0; j < _joints; j++) _allow[j] = Math.Max(_allow[j], Angle(_scratch, _m, j));
             }
 
@@ -188,26 +189,26 @@ namespace DeltaInterpolator.Core.Playback
         }
 
         /// <summary>M while the frames are missing: S carried by the correction of the newest decoded frame (d = decoded).</summary>
-        private void CarryCorrection(TransitionJob job, int decoded)
+        private void CarryCorrection(TransitionRequest request, int decoded)
         {
-            Transition t = job.Transition;
+            Transition t = request.Transition;
             int k = decoded - 1;
             int jr = 4 * _joints;
-            for (int c = 0; c < 3; c++) _mRoot[c] = _sRoot[c] + (t.RootPositions[3 * k + c] - job.SlerpRoots[3 * k + c]);
+            for (int c = 0; c < 3; c++) _mRoot[c] = _sRoot[c] + (t.RootPositions[3 * k + c] - request.SlerpRoots[3 * k + c]);
             for (int j = 0; j < _joints; j++)
             {
                 QuaternionD m = QuaternionD.Read(t.LocalRotations, jr * k + 4 * j);
-                QuaternionD s = QuaternionD.Read(job.SlerpRotations, jr * k + 4 * j);
+                QuaternionD s = QuaternionD.Read(request.SlerpRotations, jr * k + 4 * j);
                 QuaternionD correction = Quaternions.Multiply(m, Quaternions.Conjugate(s));
                 Quaternions.Normalize(Quaternions.Multiply(correction, QuaternionD.Read(_s, 4 * j))).Write(_m, 4 * j);
             }
         }
 
         /// <summary>The pose between model frames a and a + 1 (0: last past key, G: target) at fraction f: SLERP frames or the network's.</summary>
-        private void Interpolate(TransitionJob job, int a, double f, bool model, double[]? root, double[] rotations)
+        private void Interpolate(TransitionRequest request, int a, double f, bool model, double[]? root, double[] rotations)
         {
-            Frame(job, a, model, out double[] rootsA, out int rootA, out double[] rotsA, out int rotA);
-            Frame(job, a + 1, model, out double[] rootsB, out int rootB, out double[] rotsB, out int rotB);
+            Frame(request, a, model, out double[] rootsA, out int rootA, out double[] rotsA, out int rotA);
+            Frame(request, a + 1, model, out double[] rootsB, out int rootB, out double[] rotsB, out int rotB);
             if (root != null)
             {
                 for (int c = 0; c < 3; c++) root[c] = rootsA[rootA + c] + f * (rootsB[rootB + c] - rootsA[rootA + c]);
@@ -222,9 +223,9 @@ namespace DeltaInterpolator.Core.Playback
             }
         }
 
-        private void Frame(TransitionJob job, int i, bool model, out double[] roots, out int rootOffset, out double[] rotations, out int rotationOffset)
+        private void Frame(TransitionRequest request, int i, bool model, out double[] roots, out int rootOffset, out double[] rotations, out int rotationOffset)
         {
-            Transition t = job.Transition;
+            Transition t = request.Transition;
             int jr = 4 * _joints;
             int gap = t.MissingFrames + 1;
             if (i == 0 || i == gap)
@@ -237,9 +238,9 @@ namespace DeltaInterpolator.Core.Playback
                 return;
             }
 
-            roots = model ? t.RootPositions : job.SlerpRoots;
+            roots = model ? t.RootPositions : request.SlerpRoots;
             rootOffset = 3 * (i - 1);
-            rotations = model ? t.LocalRotations : job.SlerpRotations;
+            rotations = model ? t.LocalRotations : request.SlerpRotations;
             rotationOffset = jr * (i - 1);
         }
 

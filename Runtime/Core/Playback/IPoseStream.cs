@@ -9,13 +9,13 @@ namespace DeltaInterpolator.Core.Playback
     /// (the user's Animator Controller); writing replaces it with the pose to show.
     /// </summary>
     /// <remarks>
-    /// Bones are numbered as the <see cref="IJointMap"/> numbers them. The Unity glue implements this on
+    /// Bones are numbered as the <see cref="Characters.IPoseConverter"/> numbers them. The Unity glue implements this on
     /// an <c>AnimationStream</c> with transform stream handles; tests and benchmarks implement it on
     /// arrays. Implemented by structs and used through generic constraints, so no call boxes or allocates.
     /// </remarks>
     public interface IPoseStream
     {
-        /// <summary>Number of bones, <see cref="IJointMap.BoneCount"/>.</summary>
+        /// <summary>Number of bones, <see cref="Characters.IPoseConverter.BoneCount"/>.</summary>
         int BoneCount { get; }
 
         /// <summary>The root bone's position in the character's space.</summary>

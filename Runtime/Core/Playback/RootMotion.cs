@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using DeltaInterpolator.Core.Rotations;
 
@@ -65,6 +66,9 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>True when the Animator applies root motion (<c>Animator.applyRootMotion</c>); read every frame.</summary>
         public bool Enabled { get; set; }
+
+        /// <summary>The character's frame in the world given to the last <see cref="BeginFrame"/> (where it stands now).</summary>
+        public RootFrame CharacterFrame => _character;
 
         /// <summary>This frame's transition velocity (world, per second; zero with root motion off or when no transition plays).</summary>
         public Vector3D TransitionVelocity { get; private set; }

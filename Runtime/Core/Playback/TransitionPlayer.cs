@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.Threading;
@@ -8,24 +10,17 @@ using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Playback
 {
-    /// <summary>
-    /// One character's neural transitions in real time: it records the pose shown every rendered frame
-    /// (<see cref="PoseHistory"/>), turns <see cref="RequestTransition"/> into a network request at the
-    /// model's frame rate, and plays the answer at whatever rate the game renders, interpolating between
-    /// model frames, blended over the character's own animation. Everything the Unity component does per
-    /// frame is here, tested by a simulated frame loop. A frame is never frozen: until the network's frames
-    /// of a request arrive, it shows the request's SLERP pose (the network's own baseline), and the
-    /// network's correction eases in when they do (<see cref="Correction"/>).
-    /// </summary>
+    /// <summary>One character's neural transitions in real time: it records the pose shown every rendered frame (<see cref="PoseHistory"/>), turns <see
+    /// cref="RequestTransition"/> into a network request at the model's frame rate, and plays the answer at whatever rate the game renders, interpolating
+    /// between model frames, blended over the character's own animation. A frame is never frozen: until the network's frames of a request arrive, it shows the request's SLERP pose (the network's own baseline), and the
+    /// network's correction eases in when they do (<see cref="Correction"/>).</summary>
     /// <remarks>
-    /// <para>Each rendered frame: <see cref="BeginFrame"/> (the transition's pose and weight for the frame
-    /// time), <see cref="PoseBlend.Apply"/> over the animation stream (the pose shown), then
-    /// <see cref="Record"/> of the pose shown. <see cref="Step"/> does the three in one call; the Unity
-    /// glue splits them between the main thread and the animation job.</para>
+    /// <para>Each rendered frame: <see cref="BeginFrame"/>, <see cref="PoseBlend.Apply"/> over the animation stream, then <see cref="Record"/> of the
+    /// pose shown (<see cref="Step"/> does the three); <see cref="TransitionCharacter"/> runs a game's whole frame around them.</para>
     /// <para>Time is real. A request of d seconds is G = round(d · fps) model frames (at least 2); its
     /// frames are spread evenly over exactly d seconds from the newest recorded frame t0, so the first
     /// rendered frame at or after t0 + d shows the target pose (weight 1), and
-    /// <see cref="TransitionCompleted"/> fires in that frame. Missing frames come from the decoder;
+    /// <see cref="TransitionCompleted"/> fires in that frame. Missing frames come from the scheduler;
     /// until the ones a frame needs are there, the frame shows the SLERP pose of the same request.</para>
     /// <para>A request made during a transition starts from the pose being shown (the newest recorded)
     /// at full weight, so the motion stays continuous; the interrupted request completes with
@@ -34,18 +29,17 @@ namespace DeltaInterpolator.Core.Playback
     /// <para>With <see cref="PlaybackSettings.LockFeet"/> (the default) each pose the transition shows has its
     /// planted feet held and its legs solved (<see cref="Feet.LiveFootLocker"/>), after the SLERP → network
     /// ease-in and before it is mapped onto the character.</para>
-    /// <para>Main thread only. <see cref="BeginFrame"/>, <see cref="Record"/> and <see cref="Step"/>
-    /// allocate nothing.</para>
+    /// <para>Main thread only. <see cref="BeginFrame"/>, <see cref="Record"/> and <see cref="Step"/> allocate nothing.</para>
     /// </remarks>
     public sealed class TransitionPlayer
     {
         /// <summary>Frame times within this of the target time count as reaching it (rounding of summed frame times).</summary>
         private const double TimeTolerance = 1e-9;
 
-        private readonly IJointMap _map;
-        private readonly TransitionDecoder _decoder;
+        private readonly IPoseConverter _map;
+        private readonly TransitionScheduler _scheduler;
         private readonly PlaybackSettings _settings;
-        private readonly List<TransitionJob> _jobs = new List<TransitionJob>();
+        private readonly List<TransitionRequest> _requests = new List<TransitionRequest>();
         private readonly int _joints;
         private readonly double[] _pastRoots;
         private readonly double[] _pastRotations;
@@ -57,7 +51,7 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _shownRotations;
         private readonly EaseIn _ease;
         private readonly LiveFootLocker? _feet;
-        private TransitionJob? _job;
+        private TransitionRequest? _request;
         private int _requestId;
         private int _nextId;
         private bool _playing;
@@ -79,21 +73,21 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>Creates a player for one character.</summary>
         /// <param name="map">Character bones ↔ model joints; its joint count must be the model's.</param>
-        /// <param name="decoder">Where the network runs (may be shared by many players of one model).</param>
+        /// <param name="scheduler">Where the network runs (may be shared by many players of one model).</param>
         /// <param name="settings">Blend times and past frames; read at each request and frame.</param>
-        public TransitionPlayer(IJointMap map, TransitionDecoder decoder, PlaybackSettings? settings = null)
+        public TransitionPlayer(IPoseConverter map, TransitionScheduler scheduler, PlaybackSettings? settings = null)
         {
             _map = map ?? throw new ArgumentNullException(nameof(map));
-            _decoder = decoder ?? throw new ArgumentNullException(nameof(decoder));
+            _scheduler = scheduler ?? throw new ArgumentNullException(nameof(scheduler));
             _settings = settings ?? new PlaybackSettings();
-            ModelContract c = decoder.Contract;
+            ModelContract c = scheduler.Contract;
             if (map.JointCount != c.JointCount)
             {
                 throw new ArgumentException($"the joint map has {map.JointCount} model joints but the model {c.Name} has {c.JointCount}; build the map from this model's skeleton", nameof(map));
             }
 
             _joints = c.JointCount;
-            FrameRate = decoder.FrameRate;
+            FrameRate = scheduler.FrameRate;
             PastFrames = _settings.PastFrames > 0 ? _settings.PastFrames : c.TrainingPastFrames.Max;
             if (PastFrames < 1 || PastFrames >= c.MaxFrameIndex) throw new ArgumentOutOfRangeException(nameof(settings), PastFrames, $"past frames must lie in 1..{c.MaxFrameIndex - 1}");
             int b = map.BoneCount;
@@ -153,37 +147,43 @@ namespace DeltaInterpolator.Core.Playback
         public ReadOnlySpan<double> ShownRotations => _shownRotations;
 
         /// <summary>The current request's network problem (keys and missing frames, model space), or null.</summary>
-        public Transition? CurrentTransition => _job?.Transition;
+        public Transition? CurrentTransition => _request?.Transition;
 
-        /// <summary>The current request's job (SLERP and network frames), for tests and tools.</summary>
-        internal TransitionJob? CurrentJob => _job;
+        /// <summary>The current request's request (SLERP and network frames), for tests and tools.</summary>
+        internal TransitionRequest? CurrentRequest => _request;
 
         /// <summary>The foot locker of this character's transitions (null when the model's skeleton lacks leg joints), for tests and tools.</summary>
         internal LiveFootLocker? Feet => _feet;
 
         /// <summary>Missing frames of the current request decoded so far.</summary>
-        public int DecodedFrames => _job?.Decoded ?? 0;
+        public int DecodedFrames => _request?.Decoded ?? 0;
 
-        /// <summary>
-        /// The model checks of a request lasting <paramref name="durationSeconds"/> from now: P past frames and
-        /// the gap it becomes at the model's frame rate, outside the ranges the model was trained on, are
-        /// warnings (it runs, but was never taught such requests); see <see cref="ModelChecks.Request"/>.
-        /// </summary>
+        /// <summary>The model checks of a request lasting <paramref name="durationSeconds"/> from now: P past frames and the gap it becomes at the model's
+        /// frame rate, outside the ranges the model was trained on, are warnings (it runs, but was never taught such requests); see <see
+        /// cref="ModelChecks.Request"/>.</summary>
         public ModelCheckReport CheckRequest(double durationSeconds)
         {
             var report = new ModelCheckReport();
-            ModelChecks.Request(_decoder.Contract, PastFrames, MissingFramesFor(durationSeconds), report);
+            ModelContract c = _scheduler.Contract;
+            string? tooLong = RequestChecks.TooLong(_scheduler.Contract, PastFrames, FrameRate, durationSeconds);
+            if (tooLong != null)
+            {
+                report.Error(c.Source, tooLong, "expected a shorter transition; split it with an intermediate target");
+                return report;
+            }
+
+            ModelChecks.Request(c, PastFrames, MissingFramesFor(durationSeconds), report);
             return report;
         }
 
-        private int MissingFramesFor(double durationSeconds) => Math.Max(2, (int)Math.Round(durationSeconds * FrameRate)) - 1;
+        // Model frames of a duration counted in double: a duration of 1e8 s is 3e9 frames, beyond int (whose cast
+        // wrapped round to a short gap that passed every check); capped, as anything past the model's span is refused.
+        private int MissingFramesFor(double durationSeconds) =>
+            (int)Math.Max(2, Math.Min(Math.Round(durationSeconds * FrameRate), _scheduler.Contract.MaxFrameIndex + 2.0)) - 1;
 
-        /// <summary>
-        /// How much of the network's correction this frame shows over the request's SLERP pose (0: SLERP only,
-        /// while the network's frames have not arrived or with <see cref="PlaybackSettings.SlerpOnly"/>; 1: the
-        /// network's pose). It rises when the frames arrive as fast as keeps every joint's turn between two
-        /// shown frames within 1.2 × the larger of SLERP's and the network's own turn there, plus 0.45°.
-        /// </summary>
+        /// <summary>How much of the network's correction this frame shows over the request's SLERP pose (0: SLERP only, while the network's frames have not
+        /// arrived or with <see cref="PlaybackSettings.SlerpOnly"/>; 1: the network's pose). It rises when the frames arrive as fast as keeps every joint's
+        /// turn between two shown frames within 1.2 × the larger of SLERP's and the network's own turn there, plus 0.45°.</summary>
         public double Correction => _ease.Weight;
 
         /// <summary>Model frames, over all requests, that playback needed before the network had decoded them (each was shown as SLERP).</summary>
@@ -192,11 +192,8 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>Rendered frames, over all requests, whose transition pose was the previous frame's although time moved on (a frozen frame); 0 by design.</summary>
         public int HeldFrames { get; private set; }
 
-        /// <summary>
-        /// Asks for a transition from the pose shown now to <paramref name="targetRotations"/> in
-        /// <paramref name="durationSeconds"/>. The network's inputs are built here (history resampled at the
-        /// model's rate, converted to the model's space); the network runs on the decoder.
-        /// </summary>
+        /// <summary>Asks for a transition from the pose shown now to <paramref name="targetRotations"/> in <paramref name="durationSeconds"/>. The network's
+        /// inputs are built here (history resampled at the model's rate, converted to the model's space); the network runs on the scheduler.</summary>
         /// <param name="targetRoot">Target root position (character space, 3 values).</param>
         /// <param name="targetRotations">Target local rotations (character space, bones × 4, w x y z).</param>
         /// <param name="durationSeconds">Seconds from the newest recorded frame to the target.</param>
@@ -206,20 +203,17 @@ namespace DeltaInterpolator.Core.Playback
         public int RequestTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double durationSeconds)
         {
             if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
+            RequestChecks.CheckFinite(targetRoot.Slice(0, 3), targetRotations.Slice(0, 4 * BoneCount), "target", nameof(targetRoot), nameof(targetRotations));
             int missing = CheckRequestable(durationSeconds);
             // A newer request replaces one still waiting for its target pose.
             DropDeferred();
             return Start(targetRoot, targetRotations, durationSeconds, missing, ++_nextId);
         }
 
-        /// <summary>
-        /// Asks for a transition whose target pose is not known yet: the animation system samples it (Unity: a
-        /// clip through the playable graph, at its next evaluation) and <see cref="CompleteDeferredTransition"/>
-        /// hands it over. The transition arrives when it would have if the pose had been given now
-        /// (<paramref name="durationSeconds"/> from the newest recorded frame); until the pose comes, the current
-        /// transition (if any) plays on. A newer request, deferred or not, and <see cref="Cancel"/> end it
-        /// (reported with ReachedTarget false).
-        /// </summary>
+        /// <summary>Asks for a transition whose target pose is not known yet: the animation system samples it (Unity: a clip through the playable graph, at its
+        /// next evaluation) and <see cref="CompleteDeferredTransition"/> hands it over. The transition arrives when it would have if the pose had been given
+        /// now (<paramref name="durationSeconds"/> from the newest recorded frame); until the pose comes, the current transition (if any) plays on. A newer
+        /// request, deferred or not, and <see cref="Cancel"/> end it (reported with ReachedTarget false).</summary>
         /// <returns>The request's id, as reported by <see cref="TransitionCompleted"/>.</returns>
         /// <exception cref="InvalidOperationException">No frame was recorded yet.</exception>
         /// <exception cref="ArgumentOutOfRangeException">The duration is not positive or longer than the model can span.</exception>
@@ -236,17 +230,15 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>True while a <see cref="DeferTransition"/> request waits for its target pose.</summary>
         public bool HasDeferredTransition => _deferredId != 0;
 
-        /// <summary>
-        /// Starts the waiting <see cref="DeferTransition"/> request with its target pose (same spaces as
-        /// <see cref="RequestTransition"/>): it arrives at the time asked for when it was deferred, or one
-        /// model frame after the newest recorded frame when the pose came later than that.
-        /// </summary>
+        /// <summary>Starts the waiting <see cref="DeferTransition"/> request with its target pose (same spaces as <see cref="RequestTransition"/>): it arrives
+        /// at the time asked for when it was deferred, or one model frame after the newest recorded frame when the pose came later than that.</summary>
         /// <returns>The deferred request's id.</returns>
         /// <exception cref="InvalidOperationException">No request is waiting.</exception>
         public int CompleteDeferredTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations)
         {
             if (_deferredId == 0) throw new InvalidOperationException("no deferred transition is waiting for its target pose");
             if (targetRoot.Length < 3 || targetRotations.Length < 4 * BoneCount) throw new ArgumentException($"a target pose needs 3 root values and {4 * BoneCount} rotation values");
+            RequestChecks.CheckFinite(targetRoot.Slice(0, 3), targetRotations.Slice(0, 4 * BoneCount), "target", nameof(targetRoot), nameof(targetRotations));
             int id = _deferredId;
             _deferredId = 0;
             double duration = Math.Max(_deferredArrival - History.NewestTime, 1.0 / FrameRate);
@@ -258,15 +250,9 @@ namespace DeltaInterpolator.Core.Playback
         {
             if (!(durationSeconds > 0) || double.IsInfinity(durationSeconds)) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, "expected a positive number of seconds");
             if (History.Count == 0) throw new InvalidOperationException("no frame has been recorded yet: play at least one frame before requesting a transition");
-            int missing = MissingFramesFor(durationSeconds);
-            ModelContract c = _decoder.Contract;
-            if (PastFrames + missing > c.MaxFrameIndex)
-            {
-                double longest = (c.MaxFrameIndex - PastFrames + 1) / FrameRate;
-                throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, $"{durationSeconds:0.###} s is {missing + 1} model frames; this model spans at most {longest:0.###} s after {PastFrames} past frames");
-            }
-
-            return missing;
+            string? tooLong = RequestChecks.TooLong(_scheduler.Contract, PastFrames, FrameRate, durationSeconds);
+            if (tooLong != null) throw new ArgumentOutOfRangeException(nameof(durationSeconds), durationSeconds, tooLong);
+            return MissingFramesFor(durationSeconds);
         }
 
         private void DropDeferred()
@@ -281,8 +267,8 @@ namespace DeltaInterpolator.Core.Playback
             int gap = missing + 1;
             bool wasPlaying = _playing;
             Interrupt(History.NewestTime);
-            TransitionJob job = JobFor(PastFrames, missing);
-            Transition t = job.Transition;
+            TransitionRequest request = RequestFor(PastFrames, missing);
+            Transition t = request.Transition;
             double t0 = History.NewestTime;
             History.Resample(t0, PastFrames, _pastRoots, _pastRotations);
             int r = 4 * BoneCount;
@@ -303,16 +289,16 @@ namespace DeltaInterpolator.Core.Playback
                 new ReadOnlySpan<double>(_pastRotations, r * (PastFrames - 1), r).CopyTo(_poseRotations);
             }
 
-            // The SLERP frames are known now; the network's correction follows when the decoder has run.
-            _decoder.Prepare(job);
+            // The SLERP frames are known now; the network's correction follows when the scheduler has run.
+            _scheduler.Prepare(request);
             if (_settings.SlerpOnly)
             {
-                job.Reset();
-                job.Finish();
+                request.Reset();
+                request.Finish();
             }
             else
             {
-                _decoder.Start(job);
+                _scheduler.Start(request);
             }
 
             _ease.Begin(t);
@@ -323,7 +309,7 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             _neededBefore = 0;
-            _job = job;
+            _request = request;
             _requestId = id;
             _playing = true;
             _reached = false;
@@ -347,12 +333,9 @@ namespace DeltaInterpolator.Core.Playback
             FlushEvents();
         }
 
-        /// <summary>
-        /// Computes the transition's pose and weight for the frame rendered at <paramref name="time"/>
-        /// (<see cref="PoseRoot"/>, <see cref="PoseRotations"/>, <see cref="Weight"/>) and fires
-        /// <see cref="TransitionCompleted"/> when this frame shows the target.
-        /// </summary>
-        /// <exception cref="InferenceFailedException">The network failed on the decoder; the transition is ended.</exception>
+        /// <summary>Computes the transition's pose and weight for the frame rendered at <paramref name="time"/> (<see cref="PoseRoot"/>, <see
+        /// cref="PoseRotations"/>, <see cref="Weight"/>) and fires <see cref="TransitionCompleted"/> when this frame shows the target.</summary>
+        /// <exception cref="InferenceFailedException">The network failed on the scheduler; the transition is ended.</exception>
         public void BeginFrame(double time)
         {
             _inFrame = true;
@@ -368,44 +351,45 @@ namespace DeltaInterpolator.Core.Playback
         }
 
         /// <summary>Records the pose shown at <paramref name="time"/> (character space) into <see cref="History"/>.</summary>
-        public void Record(double time, ReadOnlySpan<double> shownRoot, ReadOnlySpan<double> shownRotations) => History.Record(time, shownRoot, shownRotations);
+        /// <exception cref="ArgumentException">The pose holds a value that is not finite (NaN or infinity): it is not recorded, so no request is built from it.</exception>
+        public void Record(double time, ReadOnlySpan<double> shownRoot, ReadOnlySpan<double> shownRotations)
+        {
+            RequestChecks.CheckFinite(shownRoot.Slice(0, Math.Min(3, shownRoot.Length)), shownRotations.Slice(0, Math.Min(4 * BoneCount, shownRotations.Length)), "pose shown", nameof(shownRoot), nameof(shownRotations));
+            History.Record(time, shownRoot, shownRotations);
+        }
 
-        /// <summary>
-        /// One rendered frame in one call: <see cref="BeginFrame"/>, <see cref="PoseBlend.Apply"/> over
-        /// <paramref name="stream"/>, and <see cref="Record"/> of the pose shown.
-        /// </summary>
+        /// <summary>One rendered frame in one call: <see cref="BeginFrame"/>, <see cref="PoseBlend.Apply"/> over <paramref name="stream"/>, and <see
+        /// cref="Record"/> of the pose shown.</summary>
         public void Step<TStream>(double time, ref TStream stream)
             where TStream : IPoseStream
         {
             BeginFrame(time);
             PoseBlend.Apply(ref stream, _weight, _poseRoot, _poseRotations, _shownRoot, _shownRotations);
-            History.Record(time, _shownRoot, _shownRotations);
+            Record(time, _shownRoot, _shownRotations);
         }
 
-        /// <summary>
-        /// Blocks until the current request's frames are all decoded (or <paramref name="millisecondsTimeout"/>
-        /// passes). Games never need this; it makes cut-scenes and tests deterministic.
-        /// </summary>
+        /// <summary>Blocks until the current request's frames are all decoded (or <paramref name="millisecondsTimeout"/> passes). Games never need this; it
+        /// makes cut-scenes and tests deterministic.</summary>
         /// <returns>True when every frame is decoded (or nothing is playing).</returns>
         public bool WaitUntilDecoded(int millisecondsTimeout)
         {
-            TransitionJob? job = _job;
-            if (job == null || !_playing || _settings.SlerpOnly) return true;
-            return _decoder.Drain(job, millisecondsTimeout);
+            TransitionRequest? request = _request;
+            if (request == null || !_playing || _settings.SlerpOnly) return true;
+            return _scheduler.Drain(request, millisecondsTimeout);
         }
 
         private void Advance(double time)
         {
-            if (!_playing || _job == null)
+            if (!_playing || _request == null)
             {
                 _weight = 0;
                 return;
             }
 
-            TransitionJob job = _job;
-            if (job.Error != null)
+            TransitionRequest request = _request;
+            if (request.Error != null)
             {
-                Exception error = job.Error;
+                Exception error = request.Error;
                 Interrupt(time);
                 _weight = 0;
                 // The request is reported (not reached) before the failure propagates: every request completes once.
@@ -445,8 +429,8 @@ namespace DeltaInterpolator.Core.Playback
             int a = Math.Min((int)Math.Floor(u), _gap - 1);
             double f = u - a;
             int need = Math.Min(a + 1, _gap - 1);
-            _decoder.Need(job, need, time);
-            int decoded = job.Decoded;
+            TransitionScheduler.Need(request, need);
+            int decoded = request.Decoded;
             if (need > _neededBefore)
             {
                 // Frames playback reaches now that the network has not answered yet: shown as SLERP.
@@ -454,7 +438,7 @@ namespace DeltaInterpolator.Core.Playback
                 _neededBefore = need;
             }
 
-            if (_ease.Show(job, a, f, decoded >= need)) HeldFrames++;
+            if (_ease.Show(request, a, f, decoded >= need)) HeldFrames++;
             // Feet after the SLERP → network ease-in, on the pose about to be shown (model space).
             _feet?.LockPose(time, _ease.Root, _ease.Rotations);
             _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
@@ -466,7 +450,7 @@ namespace DeltaInterpolator.Core.Playback
         private void Interrupt(double time)
         {
             _feet?.End();
-            if (_job != null) _job.Cancel();
+            if (_request != null) _request.Cancel();
             if (_playing && !_reached) _pendingInterruption = new TransitionCompletion(_requestId, false, time);
             _playing = false;
         }
@@ -494,16 +478,16 @@ namespace DeltaInterpolator.Core.Playback
             }
         }
 
-        private TransitionJob JobFor(int past, int missing)
+        private TransitionRequest RequestFor(int past, int missing)
         {
-            foreach (TransitionJob j in _jobs)
+            foreach (TransitionRequest j in _requests)
             {
-                if (j != _job && j.Finished && j.Transition.PastFrames == past && j.Transition.MissingFrames == missing) return j;
+                if (j != _request && j.Finished && j.Transition.PastFrames == past && j.Transition.MissingFrames == missing) return j;
             }
 
-            var job = new TransitionJob(new Transition(_decoder.Contract.Skeleton, past, missing), _decoder.Contract.KeyFeatureSize);
-            _jobs.Add(job);
-            return job;
+            var request = new TransitionRequest(new Transition(_scheduler.Contract.Skeleton, past, missing), _scheduler.Contract);
+            _requests.Add(request);
+            return request;
         }
 
         private static double SmoothStep(double x)

@@ -1,9 +1,9 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Inference;
-using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Core.Workflows
     /// <summary>
     /// The editor baker's Core path: a character's key poses as the component sees the character (its
     /// <see cref="CharacterRig"/>, the joint map with the settings' renames) → <see cref="InbetweenBake.Run"/>
-    /// through the same skeleton map as the component (<see cref="CharacterRig.CreateJointMap"/>: reference pose
+    /// through the same skeleton map as the component (<see cref="CharacterRig.CreatePoseConverter"/>: reference pose
     /// checked against the model's T-pose) → the filled motion on the character's skeleton, which
     /// <see cref="CharacterPoseTrack.ReadUnityPose"/> turns back into the bones' local transforms.
     /// </summary>
@@ -29,7 +29,7 @@ namespace DeltaInterpolator.Core.Workflows
         {
             if (contract == null) throw new ArgumentNullException(nameof(contract));
             if (rig == null) throw new ArgumentNullException(nameof(rig));
-            SkeletonJointMap map = rig.CreateJointMap(contract.Skeleton, jointMap, maxBoneDeviationDegrees);
+            SkeletonPoseConverter map = rig.CreatePoseConverter(contract.Skeleton, jointMap, maxBoneDeviationDegrees);
             return MappedRig.FromMap(contract, map.Map, frameTime, rig.Name, "the character's reference pose");
         }
 

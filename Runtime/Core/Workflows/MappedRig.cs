@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Globalization;
 using DeltaInterpolator.Core.Baking;
@@ -57,7 +58,7 @@ namespace DeltaInterpolator.Core.Workflows
         public double KeyRoundTripDegrees { get; private set; }
 
         /// <summary>
-        /// The seam of a rig whose map is already built (a character's, <see cref="Playback.CharacterRig.CreateJointMap"/>:
+        /// The seam of a rig whose map is already built (a character's, <see cref="Characters.CharacterRig.CreatePoseConverter"/>:
         /// the component's map, so that the editor baker sees the character as the component does).
         /// </summary>
         /// <param name="contract">The model's contract (frame rate).</param>

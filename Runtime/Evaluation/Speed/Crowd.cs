@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -6,7 +8,7 @@ using DeltaInterpolator.Core.Playback;
 namespace DeltaInterpolator.Evaluation.Speed
 {
     /// <summary>
-    /// The characters of the crowd benchmark on one decoder, stepped on a simulated 60 fps clock: each plays
+    /// The characters of the crowd benchmark on one scheduler, stepped on a simulated 60 fps clock: each plays
     /// its own animation (every joint swinging about its own axis, the root walking) and all of them request
     /// a transition in the same rendered frame. Public for the BenchmarkDotNet crowd benchmark (Tools~/Benchmarks).
     /// </summary>
@@ -20,12 +22,14 @@ namespace DeltaInterpolator.Evaluation.Speed
         private readonly int _bones;
         private int _frame;
         private int _round;
+        private readonly TransitionScheduler _scheduler;
 
         /// <summary>Creates <paramref name="characters"/> players on <paramref name="decoder"/> (a quarter with 4 past keys).</summary>
-        public Crowd(TransitionDecoder decoder, int characters)
+        public Crowd(TransitionScheduler decoder, int characters)
         {
+            _scheduler = decoder;
             ModelContract c = decoder.Contract;
-            var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+            var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
             _bones = c.JointCount;
             _roots = new double[characters][];
             _rotations = new double[characters][];
@@ -69,10 +73,11 @@ namespace DeltaInterpolator.Evaluation.Speed
             while (Time < end) Step();
         }
 
-        /// <summary>One rendered frame: every character samples its animation and its player steps.</summary>
+        /// <summary>One rendered frame: the scheduler's pump (the frame's owner runs it once, before the characters), then every character samples its animation and its player steps.</summary>
         public void Step()
         {
             _frame++;
+            _scheduler.Pump();
             for (int i = 0; i < Players.Count; i++)
             {
                 Pose(i, Time, _roots[i], _rotations[i]);

@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Scheduling;
 using System;
 using System.Diagnostics;
 using System.Threading;
@@ -34,7 +35,7 @@ namespace DeltaInterpolator.Evaluation.Speed
             var result = new CrowdTimings { Characters = characters };
 
             // 1. Real clock, worker thread: request cost, held frames, late frames.
-            using (var worker = new InferenceWorker(loadLazyModel()))
+            using (var worker = new WorkerThreadScheduler(loadLazyModel()))
             {
                 var crowd = new Crowd(worker, characters);
                 crowd.Warm();
@@ -74,12 +75,12 @@ namespace DeltaInterpolator.Evaluation.Speed
             }
 
             // 2. As fast as it can: first frames and all frames of every character (batched).
-            using (var decoder = new MainThreadDecoder(loadLazyModel(), framesPerRun: 1))
+            using (var decoder = new MainThreadScheduler(loadLazyModel(), framesPerRun: 1))
             {
                 var crowd = new Crowd(decoder, characters);
                 crowd.Warm();
                 crowd.RequestAll();
-                while (!crowd.AllDecoded) decoder.Scheduler.Pump(int.MaxValue);
+                while (!crowd.AllDecoded) decoder.Batches.Pump(int.MaxValue);
                 crowd.PlayFor(1.3);
                 // The main thread's cost of the N requests (keys copied, localized, features and SLERP frames;
                 // no network: that runs on the decoder), measured here where no worker thread shares the core.
@@ -90,7 +91,7 @@ namespace DeltaInterpolator.Evaluation.Speed
                 double first = -1;
                 while (true)
                 {
-                    decoder.Scheduler.Pump(int.MaxValue);
+                    decoder.Batches.Pump(int.MaxValue);
                     bool all = true, any = true;
                     foreach (TransitionPlayer p in crowd.Players)
                     {
@@ -125,8 +126,8 @@ namespace DeltaInterpolator.Evaluation.Speed
         // frame over FrameCostRounds rounds of simultaneous requests.
         private static (double BatchedInference, double BatchedStep, double UnbatchedInference, double UnbatchedStep) FrameCost(Func<Inbetweener> loadLazyModel, int characters)
         {
-            using var batched = new MainThreadDecoder(loadLazyModel(), 256, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
-            using var unbatched = new MainThreadDecoder(loadLazyModel(), 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
+            using var batched = new MainThreadScheduler(loadLazyModel(), 256, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
+            using var unbatched = new MainThreadScheduler(loadLazyModel(), 1, framesPerRun: 1) { TokensPerFrame = int.MaxValue };
             var crowds = new[] { new Crowd(batched, characters), new Crowd(unbatched, characters) };
             var decoders = new[] { batched, unbatched };
             foreach (Crowd crowd in crowds)
@@ -148,11 +149,11 @@ namespace DeltaInterpolator.Evaluation.Speed
                 {
                     for (int k = 0; k < 2; k++)
                     {
-                        long p0 = decoders[k].Scheduler.PumpTicks;
+                        long p0 = decoders[k].Batches.PumpTicks;
                         long t0 = Stopwatch.GetTimestamp();
                         crowds[k].Step();
                         steps[k] += Ms(t0);
-                        pumped[k] += decoders[k].Scheduler.PumpTicks - p0;
+                        pumped[k] += decoders[k].Batches.PumpTicks - p0;
                     }
 
                     frames++;

@@ -46,7 +46,7 @@ namespace DeltaInterpolator.Evaluation.Speed
             if (model.SupportsLazyDecoding)
             {
                 Transition t = SyntheticTransition.Create(contract, PastFrames, LazyLength);
-                LazyDecoder lazy = model.CreateLazy(PastFrames, LazyLength);
+                LazyInbetweener lazy = model.CreateLazy(PastFrames, LazyLength);
                 lazyKeys = Timing.Measure(() => lazy.Begin(t), repeats, 1e3);
                 int k = 0;
                 lazyFrame = Timing.Measure(() => lazy.DecodeFrame(k = (k + 1) % LazyLength), repeats, 1e3);

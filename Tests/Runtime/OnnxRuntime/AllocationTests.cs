@@ -17,7 +17,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             GoldenCase c = Fixtures.Golden[2];
             Transition t = c.ToTransition(model.Contract.Skeleton);
             var global = new double[c.Gap * model.Contract.JointCount * 3];
-            LazyDecoder lazy = model.CreateLazy(c.PastFrames, c.Gap);
+            LazyInbetweener lazy = model.CreateLazy(c.PastFrames, c.Gap);
             for (int i = 0; i < 3; i++)
             {
                 model.Inbetween(t, global);

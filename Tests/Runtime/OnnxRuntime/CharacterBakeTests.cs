@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.IO;
 using DeltaInterpolator.Core.Bvh;

@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -24,9 +26,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void BatchedRunsEqualOneRunPerCharacterAndOldFilesStillLoad()
         {
-            using var batched = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 12, seed: 1);
-            using var single = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true), maxBatch: 1), 12, seed: 1);
-            using var v1 = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(V1Model, requireLazy: true)), 12, seed: 1);
+            using var batched = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 12, seed: 1);
+            using var single = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true), maxBatch: 1), 12, seed: 1);
+            using var v1 = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(V1Model, requireLazy: true)), 12, seed: 1);
             Assert.That(v1.Decoder.Contract.ContractVersion, Is.EqualTo(1));
             foreach (Crowd c in new[] { batched, single, v1 })
             {
@@ -35,12 +37,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 c.PlayUntil(1.3);
             }
 
-            var b = (MainThreadDecoder)batched.Decoder;
-            var s = (MainThreadDecoder)single.Decoder;
-            Assert.That(b.Scheduler.Runs, Is.LessThan(s.Scheduler.Runs / 4), "in far fewer runs");
+            var b = (MainThreadScheduler)batched.Decoder;
+            var s = (MainThreadScheduler)single.Decoder;
+            Assert.That(b.Batches.Runs, Is.LessThan(s.Batches.Runs / 4), "in far fewer runs");
             for (int i = 0; i < batched.Players.Count; i++)
             {
-                TransitionJob x = batched.Players[i].CurrentJob!, y = single.Players[i].CurrentJob!, z = v1.Players[i].CurrentJob!;
+                TransitionRequest x = batched.Players[i].CurrentRequest!, y = single.Players[i].CurrentRequest!, z = v1.Players[i].CurrentRequest!;
                 Assert.That(z.Transition.MissingFrames, Is.EqualTo(x.Transition.MissingFrames), $"character {i}: the same request on the version 1 file");
                 Assert.That(z.Transition.PastFrames, Is.EqualTo(x.Transition.PastFrames), $"character {i}: the same request on the version 1 file");
                 Assert.That(x.Decoded, Is.EqualTo(x.Transition.MissingFrames));
@@ -62,7 +64,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [TestCase(5, true)]
         public void LateFramesShowSlerpAndTheCorrectionEasesInWithoutHoldOrPop(int latencyFrames, bool device)
         {
-            using var crowd = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out _, device)), 8, seed: 2);
+            using var crowd = new Crowd(new MainThreadScheduler(StandInInbetweener(latencyFrames, out _, device)), 8, seed: 2);
             crowd.PlayUntil(0.5);
             crowd.RequestAll();
             var records = new List<(double U, double[] Shown, double Correction)>[crowd.Players.Count];
@@ -87,7 +89,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 TransitionPlayer p = crowd.Players[i];
                 Assert.That(p.HeldFrames, Is.EqualTo(0), "never a frozen frame");
                 Assert.That(p.WaitUntilDecoded(10000), Is.True);
-                TransitionJob job = p.CurrentJob!;
+                TransitionRequest job = p.CurrentRequest!;
                 for (int r = 0; r < records[i].Count; r++)
                 {
                     var (u, shown, correction) = records[i][r];
@@ -134,7 +136,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void ABurstOfRequestsIsSpreadOverFramesWithinTheBudget(bool device)
         {
             Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs, device);
-            var decoder = new MainThreadDecoder(model) { TokensPerFrame = 200 };
+            var decoder = new MainThreadScheduler(model) { TokensPerFrame = 200 };
             using var crowd = new Crowd(decoder, 64, seed: 3);
             crowd.PlayUntil(0.5);
             crowd.RequestAll();
@@ -163,7 +165,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void SlerpOnlyCharactersNeverRunTheNetwork()
         {
             Inbetweener model = StandInInbetweener(0, out StandInBackend[] graphs);
-            using var crowd = new Crowd(new MainThreadDecoder(model), 4, seed: 4, new PlaybackSettings { SlerpOnly = true });
+            using var crowd = new Crowd(new MainThreadScheduler(model), 4, seed: 4, new PlaybackSettings { SlerpOnly = true });
             crowd.PlayUntil(0.5);
             long runs = graphs[1].Runs + graphs[2].Runs;
             crowd.RequestAll();
@@ -179,7 +181,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void APlayingCrowdAllocatesNothingPerFrame()
         {
-            using var crowd = new Crowd(new MainThreadDecoder(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 16, seed: 5);
+            using var crowd = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true)), 16, seed: 5);
             // A first round creates the jobs, batch tensors and bindings; the second is the steady state.
             crowd.PlayUntil(0.5);
             crowd.RequestAll();
@@ -196,11 +198,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [TestCase(3)]
         public void OnADeviceBackendKeyMemoryNeverCrossesToTheHostAndResultsEqualTheHostPath(int latencyFrames)
         {
-            using var host = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out StandInBackend[] h)), 12, seed: 6);
-            using var device = new Crowd(new MainThreadDecoder(StandInInbetweener(latencyFrames, out StandInBackend[] d, device: true)), 12, seed: 6);
-            BatchScheduler scheduler = ((MainThreadDecoder)device.Decoder).Scheduler;
+            using var host = new Crowd(new MainThreadScheduler(StandInInbetweener(latencyFrames, out StandInBackend[] h)), 12, seed: 6);
+            using var device = new Crowd(new MainThreadScheduler(StandInInbetweener(latencyFrames, out StandInBackend[] d, device: true)), 12, seed: 6);
+            BatchPump scheduler = ((MainThreadScheduler)device.Decoder).Batches;
             Assert.That(scheduler.KeepsKeyMemoryOnDevice, Is.True);
-            Assert.That(((MainThreadDecoder)host.Decoder).Scheduler.KeepsKeyMemoryOnDevice, Is.False);
+            Assert.That(((MainThreadScheduler)host.Decoder).Batches.KeepsKeyMemoryOnDevice, Is.False);
             long reads = h[1].KeyMemoryHostReads + d[1].KeyMemoryHostReads, uploads = h[2].KeyMemoryHostUploads + d[2].KeyMemoryHostUploads;
             Assert.That(reads, Is.EqualTo(2), "each model's load-time probe (constant outputs) ran the keys graph once on the host");
             Assert.That(uploads, Is.EqualTo(2), "and the frame graph");
@@ -220,7 +222,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             for (int i = 0; i < host.Players.Count; i++)
             {
-                TransitionJob x = host.Players[i].CurrentJob!, y = device.Players[i].CurrentJob!;
+                TransitionRequest x = host.Players[i].CurrentRequest!, y = device.Players[i].CurrentRequest!;
                 Assert.That(y.Decoded, Is.EqualTo(y.Transition.MissingFrames), $"character {i}: every frame decoded");
                 Assert.That(MaxAbs(x.Transition.LocalRotations, y.Transition.LocalRotations), Is.LessThan(1e-5), $"character {i}: device vs host key memory");
                 Assert.That(MaxAbsValues(x.Transition.RootPositions, y.Transition.RootPositions), Is.LessThan(1e-5 / 0.01), $"character {i}: root positions");
@@ -253,9 +255,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void OnADeviceBackendAWorkerThreadDecodesTheSameFrames()
         {
-            // InferenceWorker runs bindings synchronously (Run, then TakeOutput) on its own thread.
-            using var host = new Crowd(new InferenceWorker(StandInInbetweener(0, out _)), 8, seed: 7);
-            using var device = new Crowd(new InferenceWorker(StandInInbetweener(0, out StandInBackend[] d, device: true)), 8, seed: 7);
+            // WorkerThreadScheduler runs bindings synchronously (Run, then TakeOutput) on its own thread.
+            using var host = new Crowd(new WorkerThreadScheduler(StandInInbetweener(0, out _)), 8, seed: 7);
+            using var device = new Crowd(new WorkerThreadScheduler(StandInInbetweener(0, out StandInBackend[] d, device: true)), 8, seed: 7);
             foreach (Crowd c in new[] { host, device })
             {
                 c.PlayUntil(0.5);
@@ -265,7 +267,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             for (int i = 0; i < host.Players.Count; i++)
             {
-                TransitionJob x = host.Players[i].CurrentJob!, y = device.Players[i].CurrentJob!;
+                TransitionRequest x = host.Players[i].CurrentRequest!, y = device.Players[i].CurrentRequest!;
                 Assert.That(MaxAbs(x.Transition.LocalRotations, y.Transition.LocalRotations), Is.LessThan(1e-5), $"character {i}");
             }
 
@@ -277,7 +279,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void OnADeviceBackendAPlayingCrowdAllocatesNothingPerFrame()
         {
-            using var crowd = new Crowd(new MainThreadDecoder(StandInInbetweener(2, out StandInBackend[] d, device: true)), 16, seed: 5);
+            using var crowd = new Crowd(new MainThreadScheduler(StandInInbetweener(2, out StandInBackend[] d, device: true)), 16, seed: 5);
             crowd.PlayUntil(0.5);
             crowd.RequestAll();
             crowd.PlayUntil(2.0);
@@ -286,7 +288,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             // as with ONNX Runtime above (the players' own first frame of a transition).
             crowd.RequestAll();
             crowd.Step();
-            BatchScheduler scheduler = ((MainThreadDecoder)crowd.Decoder).Scheduler;
+            BatchPump scheduler = ((MainThreadScheduler)crowd.Decoder).Batches;
             Assert.That(scheduler.DeviceRunsHeld, Is.EqualTo(0), "the keys run is still in flight");
             long before = GC.GetAllocatedBytesForCurrentThread();
             for (int i = 0; i < 40; i++) crowd.Step();
@@ -298,7 +300,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         private static string V1Model => System.IO.Path.Combine(Fixtures.Directory, "tiny-model-v1.onnx");
 
-        private static double[] At(TransitionJob job, double u, bool model)
+        private static double[] At(TransitionRequest job, double u, bool model)
         {
             var t = job.Transition;
             int g = t.MissingFrames + 1;
@@ -384,12 +386,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly ArrayPoseStream[] _streams;
             private readonly int _seed;
 
-            public Crowd(TransitionDecoder decoder, int characters, int seed, PlaybackSettings? settings = null)
+            public Crowd(TransitionScheduler decoder, int characters, int seed, PlaybackSettings? settings = null)
             {
                 Decoder = decoder;
                 _seed = seed;
                 ModelContract c = decoder.Contract;
-                Map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                Map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _streams = new ArrayPoseStream[characters];
                 for (int i = 0; i < characters; i++)
                 {
@@ -403,9 +405,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 }
             }
 
-            public TransitionDecoder Decoder { get; }
+            public TransitionScheduler Decoder { get; }
 
-            public NameJointMap Map { get; }
+            public NamePoseConverter Map { get; }
 
             public List<TransitionPlayer> Players { get; } = new List<TransitionPlayer>();
 
@@ -420,6 +422,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 _frame++;
                 Time = _frame / Fps;
+                Decoder.Pump();
                 for (int i = 0; i < Players.Count; i++)
                 {
                     _clips[i].Sample(Time, _streams[i].Root, _streams[i].Rotations);

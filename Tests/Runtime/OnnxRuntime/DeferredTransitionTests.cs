@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -141,15 +143,15 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private sealed class Character : IDisposable
         {
             private readonly SyntheticClip _clip;
-            private readonly TransitionDecoder _decoder;
+            private readonly TransitionScheduler _decoder;
             private ArrayPoseStream _stream;
 
             public Character()
             {
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = new MainThreadDecoder(model);
+                _decoder = new MainThreadScheduler(model);
                 ModelContract c = model.Contract;
-                var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.JointCount, 5);
                 Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = true });
                 Player.TransitionCompleted += e => Completions.Add(e);
@@ -168,6 +170,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 Time += 1.0 / Fps;
                 _clip.Sample(Time, _stream.Root, _stream.Rotations);
+                _decoder.Pump();
                 Player.Step(Time, ref _stream);
             }
 

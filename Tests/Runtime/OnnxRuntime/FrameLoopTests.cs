@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.Linq;
@@ -216,8 +218,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double _jitter;
             private readonly TestRandom _random;
             private readonly SyntheticClip _clip;
-            private readonly NameJointMap _map;
-            private readonly TransitionDecoder _decoder;
+            private readonly NamePoseConverter _map;
+            private readonly TransitionScheduler _decoder;
             private readonly Inbetweener _reference;
             private ArrayPoseStream _stream;
 
@@ -227,13 +229,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _jitter = jitter;
                 _random = new TestRandom(seed);
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = decoding == Decoding.WorkerThread ? new InferenceWorker(model) : new MainThreadDecoder(model);
+                _decoder = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(model) : new MainThreadScheduler(model);
                 _reference = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel);
                 ModelContract c = model.Contract;
                 // The character lists its bones in another order than the model: the map must reorder.
                 var names = new List<string>(c.Skeleton.Names);
                 names.Reverse();
-                _map = new NameJointMap(c.Skeleton, c.UnitScale, names);
+                _map = new NamePoseConverter(c.Skeleton, c.UnitScale, names);
                 _clip = new SyntheticClip(names.Count, seed);
                 Player = new TransitionPlayer(_map, _decoder, new PlaybackSettings { BlendInSeconds = BlendIn, BlendOutSeconds = BlendOut, LockFeet = false });
                 Player.TransitionCompleted += e => Completions.Add(e);
@@ -263,6 +265,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 NextStep = Draw();
                 // The controller's output this frame, then the player's layer on top of it.
                 _clip.Sample(Time, _stream.Root, _stream.Rotations);
+                _decoder.Pump();
                 Player.Step(Time, ref _stream);
                 Array.Copy(_stream.Root, Shown.Root, 3);
                 Array.Copy(_stream.Rotations, Shown.Rotations, _stream.Rotations.Length);

@@ -77,7 +77,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Transition whole = c.ToTransition(_model.Contract.Skeleton);
             _model.Inbetween(whole);
             Transition lazy = c.ToTransition(_model.Contract.Skeleton);
-            LazyDecoder decoder = _model.CreateLazy(c.PastFrames, c.Gap);
+            LazyInbetweener decoder = _model.CreateLazy(c.PastFrames, c.Gap);
             decoder.Begin(lazy);
             // Out of order on purpose: a frame depends on the keys only.
             for (int k = c.Gap - 1; k >= 0; k--) decoder.DecodeFrame(k);

@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.Threading;
@@ -39,7 +41,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             loop.Status.Run();
             loop.PlayFrames(30, 1.0 / 60);
             var (root, rotations) = loop.ClipPose(3.0);
-            int id = loop.Player.RequestTransition(root, rotations, 0.5);
+            int id = loop.Request(root, rotations, 0.5);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.False, "the engine fails before the transition is decoded");
 
             int failures = 0;
@@ -77,7 +79,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             loop.Status.Run();
             loop.PlayFrames(20, 1.0 / 60);
             var (root, rotations) = loop.ClipPose(2.0);
-            loop.Player.RequestTransition(root, rotations, 0.3);
+            loop.Request(root, rotations, 0.3);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
             loop.PlayFrames(40, 1.0 / 60);
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
@@ -94,7 +96,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             loop.Status.Run();
             loop.PlayFrames(30, 1.0 / 60);
             var (root, rotations) = loop.ClipPose(3.0);
-            loop.Player.RequestTransition(root, rotations, 0.3);
+            loop.Request(root, rotations, 0.3);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
             loop.PlayFrames(6, 1.0 / 60);
             loop.Settings.BlendOutSeconds = 0;
@@ -115,7 +117,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 loop.Status.Run();
                 loop.PlayFrames(30, 1.0 / 60);
                 var (root, rotations) = loop.ClipPose(3.0);
-                loop.Player.RequestTransition(root, rotations, 0.5);
+                loop.Request(root, rotations, 0.5);
                 Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
                 loop.PlayFrames(12, 1.0 / 60);
                 Assert.That(loop.Player.Weight, Is.EqualTo(1.0));
@@ -176,7 +178,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(loop.PlayedFrames, Is.EqualTo(50), "one played frame per physics step, none per rendered frame");
             var (root, rotations) = loop.ClipPose(3.0);
             double requestedAt = loop.Clock.Time;
-            loop.Player.RequestTransition(root, rotations, 0.5);
+            loop.Request(root, rotations, 0.5);
             Assert.That(loop.Player.WaitUntilDecoded(10000), Is.True);
             while (loop.Completions.Count == 0 && realTime < 5) RenderFrame();
             Assert.That(loop.Completions.Count, Is.EqualTo(1));
@@ -189,8 +191,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             public const string EngineMessage = "simulated GPU worker failure";
             private readonly SyntheticClip _clip;
-            private readonly TransitionDecoder _decoder;
+            private readonly TransitionScheduler _decoder;
             private readonly RunBudget _budget;
+            private readonly TransitionCharacter _character;
+            private readonly double[] _shown;
             private ArrayPoseStream _stream;
 
             public Loop(AnimationClockMode mode, Decoding decoding, int runsBeforeFailure)
@@ -203,24 +207,29 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     new FailingBackend(OnnxRuntimeBackend.Load(whole.Replace(".onnx", ".frame.onnx")), _budget));
                 // Loading probes each graph once; the budget counts the runs of play only.
                 _budget.Arm(runsBeforeFailure);
-                _decoder = decoding == Decoding.WorkerThread ? new InferenceWorker(inbetweener) : new MainThreadDecoder(inbetweener);
+                _decoder = decoding == Decoding.WorkerThread ? new WorkerThreadScheduler(inbetweener) : new MainThreadScheduler(inbetweener);
                 ModelContract c = inbetweener.Contract;
-                var map = new NameJointMap(c.Skeleton, c.UnitScale, c.Skeleton.Names);
+                var map = new NamePoseConverter(c.Skeleton, c.UnitScale, c.Skeleton.Names);
                 _clip = new SyntheticClip(c.Skeleton.JointCount, seed: 11);
                 Settings = new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2 };
-                Player = new TransitionPlayer(map, _decoder, Settings);
+                _mode = mode;
+                _character = new TransitionCharacter(map, _decoder, Settings, RootFrame.Identity, ModelName, EngineName);
                 Player.TransitionCompleted += e => Completions.Add(e);
                 _stream = new ArrayPoseStream(new double[3], new double[4 * c.Skeleton.JointCount]);
                 Shown = new ArrayPoseStream(new double[3], new double[4 * c.Skeleton.JointCount]);
-                Clock = new AnimationClock { Mode = mode };
+                // The pose shown before the first frame: the clip's at time 0.
+                _clip.Sample(0, Shown.Root, Shown.Rotations);
+                _shown = new double[_character.PoseLength];
             }
 
-            public TransitionPlayer Player { get; }
+            public TransitionPlayer Player => _character.Player;
+
+            private readonly AnimationClockMode _mode;
 
             /// <summary>The settings the player reads at each frame (the component edits them in place).</summary>
             public PlaybackSettings Settings { get; }
 
-            public AnimationClock Clock { get; }
+            public AnimationClock Clock => _character.Clock;
 
             public PlaybackStatus Status { get; } = new PlaybackStatus();
 
@@ -253,22 +262,49 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             /// </summary>
             public void Frame(double deltaTime, double unscaledDeltaTime, FrameCallback callback = FrameCallback.Update)
             {
-                if (!Clock.Advance(callback, deltaTime, unscaledDeltaTime, 0.02)) return;
-                double time = Clock.Time;
-                _clip.Sample(time, _stream.Root, _stream.Rotations);
-                if (Status.TryBeginFrame(Player, time, ModelName, EngineName))
-                {
-                    PlayedFrames++;
-                    if (Player.IsPlaying) FramesBeforeFailure++;
-                    PoseBlend.Apply(ref _stream, Player.Weight, Player.PoseRoot, Player.PoseRotations, Shown.Root, Shown.Rotations);
-                    Player.Record(time, Shown.Root, Shown.Rotations);
-                }
-                else
+                // The frame's owner pumps the scheduler once; a component that is not running has no character to call.
+                _decoder.Pump();
+                if (!Status.IsRunning)
                 {
                     // Not running: the character shows its own animation.
-                    Array.Copy(_stream.Root, Shown.Root, 3);
-                    Array.Copy(_stream.Rotations, Shown.Rotations, _stream.Rotations.Length);
+                    _clip.Sample(Clock.Time, Shown.Root, Shown.Rotations);
+                    return;
                 }
+
+                var input = new CharacterFrameInput
+                {
+                    Callback = callback, ClockMode = _mode, DeltaTime = deltaTime, UnscaledDeltaTime = unscaledDeltaTime, FixedDeltaTime = 0.02,
+                    Place = new CharacterPlace { RotationW = 1, Scale = 1 },
+                };
+                CharacterFrameOutput frame = _character.Frame(input, ShownPose(), ReadOnlySpan<double>.Empty);
+                if (frame.Failed)
+                {
+                    // The component: one failure, with the character's reason; then its own animation.
+                    Status.Fail(frame.FailureReason!, frame.Error);
+                    _clip.Sample(Clock.Time, Shown.Root, Shown.Rotations);
+                    return;
+                }
+
+                if (!frame.Played) return;
+                PlayedFrames++;
+                if (Player.IsPlaying) FramesBeforeFailure++;
+                _clip.Sample(Clock.Time, _stream.Root, _stream.Rotations);
+                var pose = new ReadOnlySpan<double>(frame.Pose);
+                PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), Shown.Root, Shown.Rotations);
+            }
+
+            /// <summary>A request as the component makes it: the pose shown handed over first, then the target.</summary>
+            public int Request(double[] root, double[] rotations, double seconds)
+            {
+                _character.Showed(new CharacterPlace { RotationW = 1, Scale = 1 }, false, ShownPose());
+                return _character.RequestTransition(root, rotations, seconds);
+            }
+
+            private double[] ShownPose()
+            {
+                Shown.Root.CopyTo(_shown, 0);
+                Shown.Rotations.CopyTo(_shown, 3);
+                return _shown;
             }
 
             public void Dispose() => _decoder.Dispose();

@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
@@ -117,7 +119,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             for (int i = 0; i < 90; i++) loop.Step();
             long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
             Assert.That(loop.Completions.Count, Is.EqualTo(1), "the loop crossed the target frame");
-            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by 90 frames (RootMotion, TransitionPlayer, PoseBlend, SkeletonJointMap)");
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by 90 frames (RootMotion, TransitionPlayer, PoseBlend, SkeletonPoseConverter)");
         }
 
         private static Vector3D Horizontal(Vector3D v) => new Vector3D(v.X, 0, v.Z);
@@ -131,20 +133,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double _jitter;
             private readonly TestRandom _random;
             private readonly UnityHumanoid _humanoid;
-            private readonly TransitionDecoder _decoder;
-            private readonly RootMotion _rootMotion;
-            private readonly double[] _poseRoot = new double[3];
-            private readonly double[] _poseRotations;
-            private readonly double[] _shownRoot = new double[3];
-            private readonly double[] _shownRotations;
-            private readonly double[] _recordRoot = new double[3];
-            private readonly double[] _recordRotations;
+            private readonly TransitionScheduler _decoder;
+            private readonly TransitionCharacter _character;
+            private readonly double[] _shown;
             private readonly double _hipsHeight;
             private ArrayPoseStream _stream;
             private double _nextStep;
-            private RootFrame _deferredFrame;
-            private double[] _deferredRoot = new double[3];
-            private double[] _deferredRotations = new double[0];
+            private double[] _sampledTarget = new double[0];
             private bool _sampled;
 
             public Loop(bool applyRootMotion, double speed, double characterScale, double fps, double jitter, bool slerpOnly)
@@ -155,20 +150,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _jitter = jitter;
                 _random = new TestRandom(17);
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
-                _decoder = new MainThreadDecoder(model);
+                _decoder = new MainThreadScheduler(model);
                 _humanoid = UnityHumanoid.Model(model.Contract.Skeleton, UnityHumanoid.Blender, seed: 21);
-                SkeletonJointMap map = _humanoid.Rig.CreateJointMap(model.Contract.Skeleton);
-                Player = new TransitionPlayer(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = slerpOnly });
+                SkeletonPoseConverter map = _humanoid.Rig.CreatePoseConverter(model.Contract.Skeleton);
+                _character = new TransitionCharacter(map, _decoder, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = slerpOnly }, map.Armature, "tiny", "ONNX Runtime");
+                Player = _character.Player;
                 Player.TransitionCompleted += e => Completions.Add(e);
-                _rootMotion = new RootMotion(map.Armature) { Enabled = applyRootMotion };
                 int n = _humanoid.BoneCount;
-                _poseRotations = new double[4 * n];
-                _shownRotations = new double[4 * n];
-                _recordRotations = new double[4 * n];
                 _stream = new ArrayPoseStream(new double[3], new double[4 * n]);
                 _hipsHeight = _humanoid.Armature.PointToParent(Vector3D.Read(_humanoid.Positions, 0)).Y;
                 // The character stands turned 30° in the world, at its scale.
                 Character = new RootFrame(new Vector3D(3.0, 0.0, -1.0), Quaternions.FromAxisAngle(Vector3D.UnitY, Math.PI / 6), characterScale);
+                // The pose the engine shows before the first frame: the controller's (as the component reads the bones).
+                _shown = new double[3 + 4 * n];
+                Controller(0, _stream.Root, _stream.Rotations);
+                _stream.Root.CopyTo(_shown, 0);
+                _stream.Rotations.CopyTo(_shown, 3);
                 _nextStep = Draw();
                 Time = 0;
             }
@@ -185,7 +182,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             public RootFrame Character { get; private set; }
 
             /// <summary>Where the hips were shown last frame, in the world.</summary>
-            public Vector3D HipsWorld => Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(_shownRoot, 0));
+            public Vector3D HipsWorld => Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(_shown, 0));
 
             /// <summary>Distance along the direction the character walks (its +Z in the world).</summary>
             public double Forward(Vector3D world) => Vector3D.Dot(world, Quaternions.Apply(Character.Rotation, Vector3D.UnitZ));
@@ -210,24 +207,23 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 var root = new double[3];
                 var rotations = new double[4 * _humanoid.BoneCount];
                 Controller(Time + 0.37, root, rotations);
-                Vector3D shownInCharacter = _humanoid.Armature.PointToParent(Vector3D.Read(_shownRoot, 0));
+                Vector3D shownInCharacter = _humanoid.Armature.PointToParent(Vector3D.Read(_shown, 0));
                 Vector3D targetInCharacter = new Vector3D(shownInCharacter.X, _hipsHeight, shownInCharacter.Z + metres / Character.Scale);
                 _humanoid.Armature.PointFromParent(targetInCharacter).Write(root, 0);
                 Vector3D world = Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(root, 0));
-                // As the component does: the target into the root-motion space, where the character stands now.
-                _rootMotion.BeginFrame(Character);
+                // As the component does: the pose shown and where the character stands now, then the request.
+                _character.Showed(Place(Character), _rootMotionOn, _shown);
                 if (sampledByTheGraph)
                 {
-                    RequestId = Player.DeferTransition(seconds);
-                    _deferredFrame = Character;
-                    _deferredRoot = root;
-                    _deferredRotations = rotations;
+                    RequestId = _character.DeferTransition(seconds);
+                    _sampledTarget = new double[3 + rotations.Length];
+                    root.CopyTo(_sampledTarget, 0);
+                    rotations.CopyTo(_sampledTarget, 3);
                     _sampled = false;
                     return world;
                 }
 
-                _rootMotion.TargetToMotionSpace(root, rotations);
-                RequestId = Player.RequestTransition(root, rotations, seconds);
+                RequestId = _character.RequestTransition(root, rotations, seconds);
                 return world;
             }
 
@@ -242,37 +238,45 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _nextStep = Draw();
                 Vector3D controllerVelocity = _rootMotionOn ? Quaternions.Apply(Character.Rotation, (_speed) * Vector3D.UnitZ) : Vector3D.Zero;
 
-                // MotionInbetweener.Update: a clip target the last evaluation sampled starts its transition; then
-                // the frame's transition pose, and the root motion plan.
-                _rootMotion.BeginFrame(Character);
-                if (Player.HasDeferredTransition && _sampled)
+                // The frame's owner pumps the scheduler; then MotionInbetweener.Update: what Unity read, one call.
+                _decoder.Pump();
+                var input = new CharacterFrameInput
                 {
-                    _rootMotion.TargetToMotionSpace(_deferredFrame, _deferredRoot, _deferredRotations);
-                    Player.CompleteDeferredTransition(_deferredRoot, _deferredRotations);
-                }
-
-                Player.BeginFrame(Time);
-                Player.PoseRoot.CopyTo(_poseRoot);
-                Player.PoseRotations.CopyTo(_poseRotations);
-                _rootMotion.Plan(Player, Time, dt, controllerVelocity, _poseRoot, _poseRotations.AsSpan(0, 4));
+                    Callback = FrameCallback.Update,
+                    ClockMode = AnimationClockMode.Scaled,
+                    DeltaTime = dt,
+                    UnscaledDeltaTime = dt,
+                    FixedDeltaTime = 0.02,
+                    ApplyRootMotion = _rootMotionOn,
+                    Place = Place(Character),
+                    ControllerVelocityX = controllerVelocity.X,
+                    ControllerVelocityY = controllerVelocity.Y,
+                    ControllerVelocityZ = controllerVelocity.Z,
+                };
+                CharacterFrameOutput frame = _character.Frame(input, _shown, _sampled ? _sampledTarget : ReadOnlySpan<double>.Empty);
+                // Every step advances the clock: each one plays (NUnit's Assert would allocate, so a plain check).
+                if (!frame.Played) throw new InvalidOperationException("a frame step did not play: " + frame.FailureReason);
 
                 // The Animator Controller's output, then TransitionLayerJob: root motion, then the pose (and the
                 // target reader's job reads a requested clip's pose from its input stream).
                 if (Player.HasDeferredTransition) _sampled = true;
                 Controller(Time, _stream.Root, _stream.Rotations);
-                Vector3D velocity = RootMotion.BlendVelocity(Player.Weight, _rootMotion.TransitionVelocity, controllerVelocity);
-                PoseBlend.Apply(ref _stream, Player.Weight, _poseRoot, _poseRotations, _shownRoot, _shownRotations);
+                var transitionVelocity = new Vector3D(frame.RootVelocityX, frame.RootVelocityY, frame.RootVelocityZ);
+                Vector3D velocity = frame.RootMotion ? RootMotion.BlendVelocity(frame.Weight, transitionVelocity, controllerVelocity) : controllerVelocity;
+                var pose = new ReadOnlySpan<double>(frame.Pose);
+                var shown = new Span<double>(_shown);
+                PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), shown.Slice(0, 3), shown.Slice(3));
 
                 // The Animator applies root motion after the job (only when applyRootMotion is on).
                 if (_rootMotionOn) Character = new RootFrame(Character.Position + dt * velocity, Character.Rotation, Character.Scale);
-
-                // Next Update: the pose shown is recorded in the root-motion space, where it was shown.
-                _rootMotion.BeginFrame(Character);
-                Array.Copy(_shownRoot, _recordRoot, 3);
-                Array.Copy(_shownRotations, _recordRotations, _shownRotations.Length);
-                _rootMotion.ShownToMotionSpace(_recordRoot, _recordRotations.AsSpan(0, 4));
-                Player.Record(Time, _recordRoot, _recordRotations);
             }
+
+            private static CharacterPlace Place(RootFrame f) => new CharacterPlace
+            {
+                X = f.Position.X, Y = f.Position.Y, Z = f.Position.Z,
+                RotationW = f.Rotation.W, RotationX = f.Rotation.X, RotationY = f.Rotation.Y, RotationZ = f.Rotation.Z,
+                Scale = f.Scale,
+            };
 
             public void Dispose() => _decoder.Dispose();
 

@@ -3,13 +3,21 @@
 from __future__ import annotations
 
 import argparse
+import errno
 import json
 import math
+import os
 import sys
 from pathlib import Path
 from typing import List, Optional
 
 from . import safe_output
+from .terminal_text import LINE_LENGTH, SafeStream, safe
+
+
+def shown(path) -> str:
+    """A path or name as a message shows it: escaped (terminal_text.safe), clipped only beyond a line's length."""
+    return safe(path, LINE_LENGTH)
 
 DEFAULT_DATA = "../shared/data/lafan1"
 DEFAULT_STATS = "../shared/data/lafan1/train_stats_official.json"
@@ -66,8 +74,9 @@ def _is_lafan1_folder(args) -> bool:
 
 
 def _run_prepare(args) -> int:
-    # Before any data is read: the output (existing without --force, or one of the named inputs) ...
-    safe_output.check(args.out, args.force, [args.stats] + [d for d in args.data if Path(d).is_file()])
+    # Before any data is read: the output (existing without --force, or one of the named inputs: --force
+    # replaces an output, never an input such as a folder's own manifest) ...
+    safe_output.check(args.out, args.force, _named_inputs(args))
     # ... then statistics the user named (the LaFAN1 default is read only by the LaFAN1 path below).
     if args.stats and args.stats != DEFAULT_STATS:
         from .benchmark import load_statistics
@@ -76,7 +85,7 @@ def _run_prepare(args) -> int:
         from .data import prepare
         safe_output.check(args.out, args.force, [args.stats, *_bvh_files(args.data[0])])  # before reading any BVH
         pack = prepare(args.data[0], args.out, args.stats)
-        print(f"wrote {args.out}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
+        print(f"wrote {shown(args.out)}: {len(pack.files)} files, {len(pack.root_positions)} frames, "
               f"{pack.skeleton.joint_count} joints")
         return 0
     from .datasets import open_source, plan_files, prepare_any
@@ -92,9 +101,11 @@ def _run_prepare(args) -> int:
         raise ValueError(f"--jobs {args.jobs}; expected 1 to 64")
     options = {"from_frame": args.from_frame, "reference_frame": args.reference_frame, "fps": args.input_fps,
                "map": args.map}
-    inputs = [d for d in args.data if Path(d).is_file()] + ([args.map] if args.map else [])
-    for source in [open_source(d) for d in args.data]:  # the output must not be one of the BVH inputs
-        inputs += [str(p.path) for p in plan_files(source, options, args.holdout, [])]
+    inputs = _named_inputs(args)
+    for source in [open_source(d) for d in args.data]:  # nor one of the BVH files, manifests or maps they name
+        plans = plan_files(source, options, args.holdout, [])
+        inputs += [str(p.path) for p in plans] + [str(p.map) for p in plans if p.map is not None]
+        inputs += [str(source.manifest)] if source.manifest is not None else []
     safe_output.check(args.out, args.force, inputs)
     pack, plans, sources = prepare_any(args.data, args.out, args.holdout, options, scales, args.cache,
                                        args.model, args.jobs)
@@ -103,10 +114,10 @@ def _run_prepare(args) -> int:
                   if not pack.is_augmented(i)) * pack.frame_time
     for s in sources:
         n = sum(1 for p in originals if p.folder == str(s.folder))
-        print(f"  {s.folder}: {n} files" + (f" (manifest {s.manifest})" if s.manifest else ""))
+        print(f"  {shown(s.folder)}: {n} files" + (f" (manifest {shown(s.manifest)})" if s.manifest else ""))
     if args.holdout:
-        print(f"  held out: files matching {' '.join(args.holdout)}")
-    print(f"wrote {args.out}: {len(originals)} files ({seconds / 60:.1f} min at {1 / pack.frame_time:.0f} fps)"
+        print(f"  held out: files matching {safe(' '.join(args.holdout), LINE_LENGTH)}")
+    print(f"wrote {shown(args.out)}: {len(originals)} files ({seconds / 60:.1f} min at {1 / pack.frame_time:.0f} fps)"
           + (f" + {len(plans) - len(originals)} time-scaled copies" if len(plans) > len(originals) else "")
           + f", {len(pack.root_positions)} frames, {pack.skeleton.joint_count} joints")
     return 0
@@ -168,7 +179,8 @@ def _train(sub) -> None:
                    help="from this step on, the run's weights (checkpoint, validation, export) are the mean of every "
                         "later step's (stochastic weight averaging; default 0: off)")
     p.add_argument("--threads", type=int, default=1,
-                   help="torch intra-op threads (default 1: measured fastest on a 2-core CPU, see model card)")
+                   help="torch intra-op threads (default 1: measured fastest on a 2-core CPU, see model card; at most "
+                        "the processors of this machine)")
     p.add_argument("--checkpoint-every", type=int, default=250)
     p.add_argument("--validate-every", type=int, default=500)
     p.add_argument("--max-minutes", type=float, default=0.0,
@@ -212,7 +224,8 @@ def _evaluate_export_fixtures(sub) -> None:
                    help="with --past-frames < 10: feed the P frames as they are (key indices 0..P-1), or repeat "
                         "the earliest to fill 10 (for models trained with 10 past frames only)")
     p.add_argument("--batch-size", type=int, default=64, help="windows per network call (default 64)")
-    p.add_argument("--threads", type=int, default=1, help="torch intra-op threads (default 1)")
+    p.add_argument("--threads", type=int, default=1,
+                   help="torch intra-op threads (default 1; at most the processors of this machine)")
     p.add_argument("--json", required=True, help="where to write the results JSON")
     p.add_argument("--plot", help="also draw the table as bar charts into this PNG")
     p.add_argument("--force", action="store_true", help="replace existing --json/--plot files")
@@ -415,9 +428,95 @@ def _run_quantize(args) -> int:
     for kind, path in report.paths.items():
         g = report.graphs[kind]
         before, after = report.sizes[kind]
-        print(f"  {kind:<5} {path}  {_size(before)} → {_size(after)}  {len(g.quantized)} MatMuls int8, "
+        print(f"  {kind:<5} {shown(path)}  {_size(before)} → {_size(after)}  {len(g.quantized)} MatMuls int8, "
               f"{len(g.kept)} float; max |int8 − float| / max |float| = {report.relative_difference[kind]:.2%}")
     return 0
+
+
+def _named_inputs(args) -> List[str]:
+    """What `prepare` reads that the command line names: --stats, --map, --model, every --data manifest and
+    each --data folder's own manifest (read even when absent now: a path it may be created at is still
+    refused). The BVH files and manifest maps are added once the sources are opened."""
+    from .datasets import MANIFEST_NAME
+    named = [args.stats, args.map, args.model]
+    for d in args.data:
+        named.append(str(Path(d) / MANIFEST_NAME) if Path(d).is_dir() else d)
+    return [str(x) for x in named if x]
+
+
+def processors() -> int:
+    """The processors this process may run on (its affinity), as `speed`/`benchmark` cap --threads."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)
+
+
+def _refuse_option(name: str, value, expected: str) -> None:
+    raise ValueError(f"{name} {value}; expected {expected}")
+
+
+def _check_whole(name: str, value: Optional[int], low: int, high: int, what: str) -> None:
+    if value is not None and not low <= value <= high:
+        _refuse_option(name, value, f"{what} from {low} to {high}")
+
+
+def _check_real(name: str, value: Optional[float], low: float, high: float, what: str, open_low: bool = False) -> None:
+    if value is None:
+        return
+    if not (math.isfinite(value) and (value > low if open_low else value >= low) and value <= high):
+        _refuse_option(name, value, f"{what} {'above' if open_low else 'from'} {low:g}" +
+                       (f" to {high:g}" if math.isfinite(high) else ""))
+
+
+def check_threads(value: int) -> None:
+    """--threads from 1 to the processors: more only compete for the same cores (500 took 19 s to start, 2^31
+    ended in std::bad_alloc blamed on the model)."""
+    if value is not None and not 1 <= value <= processors():
+        _refuse_option("--threads", value, f"1 to {processors()} threads (the processors of this machine; more only "
+                                           "compete for the same cores)")
+
+
+def check_train_options(args) -> None:
+    """Every `train` number refused in one line (`--OPTION VALUE; expected ...`) before anything is read; a zero
+    batch, block or head count, or a checkpoint every 0 steps, ended in tracebacks of 12 to 42 lines."""
+    check_threads(args.threads)
+    _check_whole("--batch-size", args.batch_size, 1, 1 << 16, "windows per step")
+    _check_whole("--steps", args.steps, 1, 1 << 40, "optimizer steps")
+    _check_whole("--checkpoint-every", args.checkpoint_every, 1, 1 << 40, "steps between checkpoints")
+    _check_whole("--validate-every", args.validate_every, 1, 1 << 40, "steps between validations")
+    _check_whole("--warmup", args.warmup, 0, 1 << 40, "warm-up steps")
+    _check_whole("--average-from", args.average_from, 0, 1 << 40, "a step (0: no averaging)")
+    _check_whole("--seed", args.seed, 0, (1 << 32) - 1, "a seed")
+    _check_whole("--width", args.width, 2, 1 << 14, "a network width")
+    _check_whole("--blocks", args.blocks, 1, 64, "a number of blocks")
+    _check_whole("--heads", args.heads, 1, 1 << 10, "a number of attention heads")
+    _check_whole("--min-past", args.min_past, 1, 10, "past keys")
+    _check_whole("--min-gap", args.min_gap, 1, 1 << 16, "missing frames")
+    _check_whole("--max-gap", args.max_gap, args.min_gap if args.min_gap >= 1 else 1, 1 << 16,
+                 "missing frames (at least --min-gap)")
+    _check_real("--lr", args.lr, 0.0, 1.0, "a learning rate", open_low=True)
+    _check_real("--decay-at", args.decay_at, 0.0, math.inf, "a fraction of --steps", open_low=True)
+    _check_real("--dropout", args.dropout, 0.0, 0.99, "a dropout probability")
+    _check_real("--reconstruction-scale", args.reconstruction_scale, 0.0, math.inf, "a weight")
+    _check_real("--foot-contact-weight", args.foot_contact_weight, 0.0, math.inf, "a weight (0: off)")
+    _check_real("--longest-past-share", args.longest_past_share, 0.0, 1.0, "a share", open_low=True)
+    _check_real("--chained-share", args.chained_share, 0.0, 1.0, "a share")
+    _check_real("--max-minutes", args.max_minutes, 0.0, math.inf, "minutes (0: no limit)")
+    if args.width is not None or args.heads is not None:
+        from .model import preset
+        sizes = {**preset(args.preset, joints=1).to_dict(), **{k: getattr(args, k) for k in ("width", "heads")
+                                                                 if getattr(args, k) is not None}}
+        if sizes["width"] % sizes["heads"]:
+            _refuse_option("--width", sizes["width"], f"a multiple of the {sizes['heads']} heads")
+
+
+def check_evaluate_options(args) -> None:
+    """`evaluate`'s numbers, as `train`'s."""
+    check_threads(args.threads)
+    _check_whole("--batch-size", args.batch_size, 1, 1 << 16, "windows per network call")
+    _check_whole("--window", args.window, 2, 1 << 20, "frames")
+    _check_whole("--offset", args.offset, 1, 1 << 20, "frames between windows")
 
 
 def _bvh_files(folder) -> List[str]:
@@ -444,6 +543,7 @@ def _run_evaluate_export_fixtures(args) -> int:
     if args.verb == "evaluate":
         from .benchmark import format_table, run_benchmark
         from .checkpoint import load_checkpoint
+        check_evaluate_options(args)
         torch.set_num_threads(args.threads)
         inputs = [args.checkpoint, args.stats, *_bvh_files(args.data)]  # an output never replaces a --data BVH
         safe_output.check(args.json, args.force, inputs)  # before the benchmark runs, not after
@@ -462,10 +562,10 @@ def _run_evaluate_export_fixtures(args) -> int:
         _refuse_non_finite(report, args.data)
         safe_output.write_text(args.json, json.dumps(report, indent=2, allow_nan=False) + "\n")
         print(format_table(report))
-        print(f"\nwrote {args.json}")
+        print(f"\nwrote {shown(args.json)}")
         if args.plot:
             from .plots import plot_benchmark
-            print(f"wrote {plot_benchmark(report, args.plot)}")
+            print(f"wrote {shown(plot_benchmark(report, args.plot))}")
         return 0
     if args.verb == "export":
         from .checkpoint import load_checkpoint
@@ -479,10 +579,10 @@ def _run_evaluate_export_fixtures(args) -> int:
         else:
             loaded = load_checkpoint(args.checkpoint)
         report = export_model(loaded, args.out, args.name)
-        print(f"{args.name}: {report.parameters:,} parameters, opset 15, checked against torch "
+        print(f"{shown(args.name)}: {report.parameters:,} parameters, opset 15, checked against torch "
               f"(max |diff| {report.max_difference:.2g})")
         for kind, path in report.paths.items():
-            print(f"  {kind:<5} {path}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")
+            print(f"  {kind:<5} {shown(path)}  {_size(report.sizes[kind])}  ops: {', '.join(report.operators[kind])}")
         return 0
     if args.verb == "chained":
         from .chained import chained_metrics
@@ -499,9 +599,9 @@ def _run_evaluate_export_fixtures(args) -> int:
                     raise ValueError(f"--every {k}: expected at least 2 frames between keys")
                 r = chained_metrics(loaded.model, pack, skeleton, k)
                 if r.get("tails", 0) == 0:
-                    print(f"{path}  every {k}: no validation tail of {k + 1} frames or more")
+                    print(f"{shown(path)}  every {k}: no validation tail of {k + 1} frames or more")
                     continue
-                print(f"{path}  every {k}: {r['tails']} tails, {r['gaps']} gaps, {r['frames']} frames  "
+                print(f"{shown(path)}  every {k}: {r['tails']} tails, {r['gaps']} gaps, {r['frames']} frames  "
                       f"position {r['model_position']:.4f} vs SLERP {r['slerp_position']:.4f} (x{r['position_vs_slerp']:.3f})  "
                       f"L2Q {r['model_l2q']:.4f} vs {r['slerp_l2q']:.4f} (x{r['l2q_vs_slerp']:.3f})")
         return 0
@@ -511,8 +611,8 @@ def _run_evaluate_export_fixtures(args) -> int:
         data = args.data if args.data and Path(args.data).exists() else None
         paths = write_fixtures(args.out, data)
         for what, path in paths.items():
-            print(f"  {what:<10} {path}  {_size(Path(path).stat().st_size)}")
-        print("skeleton from " + (str(data) if data else "the built-in LaFAN1 copy"))
+            print(f"  {what:<10} {shown(path)}  {_size(Path(path).stat().st_size)}")
+        print("skeleton from " + (shown(data) if data else "the built-in LaFAN1 copy"))
         return 0
     raise ValueError(f"unknown verb {args.verb}")
 
@@ -531,11 +631,34 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Optional[List[str]] = None) -> int:
+    """Runs one verb with stdout and stderr escaping terminal control characters (a file name with ESC in it
+    cannot rewrite the terminal through any module's message); refusals are one line, exit 2."""
+    streams = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = SafeStream(sys.stdout), SafeStream(sys.stderr)
+    try:
+        return _main(argv)
+    finally:
+        sys.stdout, sys.stderr = streams
+
+
+def _close_progress_bars() -> None:
+    """Ends any progress bar a failing verb left open (e.g. train's, when a checkpoint cannot be written), so the
+    error starts a line of its own instead of trailing the bar."""
+    tqdm = sys.modules.get("tqdm")
+    for bar in list(getattr(getattr(tqdm, "tqdm", None), "_instances", None) or []):
+        try:
+            bar.close()
+        except Exception:  # noqa: BLE001 - a bar that cannot close must not hide the error
+            pass
+
+
+def _main(argv: Optional[List[str]]) -> int:
     args = build_parser().parse_args(argv)
     try:
         if args.verb == "prepare":
             return _run_prepare(args)
         if args.verb == "train":
+            check_train_options(args)
             from .train import TrainConfig, train
             overrides = {k: getattr(args, k) for k in ("width", "blocks", "heads", "dropout")
                          if getattr(args, k) is not None}
@@ -553,7 +676,7 @@ def main(argv: Optional[List[str]] = None) -> int:
                               chained_share=args.chained_share, average_from=args.average_from,
                               foot_contact_weight=args.foot_contact_weight)
             path = train(cfg)
-            print(f"checkpoint: {path}")
+            print(f"checkpoint: {shown(path)}")
             return 0
         if args.verb == "quantize":
             return _run_quantize(args)
@@ -561,12 +684,15 @@ def main(argv: Optional[List[str]] = None) -> int:
             return _run_contacts(args)
         return _run_evaluate_export_fixtures(args)
     except ValueError as e:  # CheckpointError, OutputPathError, bad data: `FILE: what; expected`
-        print(f"error: {e}", file=sys.stderr)
+        _close_progress_bars()
+        print(f"error: {safe(e, LINE_LENGTH)}", file=sys.stderr)  # one line, whatever the names in it hold
         return 2
     except OSError as e:  # unreadable or unwritable files the checks above could not foresee
+        _close_progress_bars()
         if e.filename is None:
-            print(f"error: {e}", file=sys.stderr)
+            print(f"error: {safe(e, LINE_LENGTH)}", file=sys.stderr)
         else:
-            print(f"error: {e.filename}: {e.strerror or type(e).__name__}; expected a readable file or a "
-                  "writable place", file=sys.stderr)
+            full = e.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
+            print(f"error: {safe(e.filename, LINE_LENGTH)}: {e.strerror or type(e).__name__}; expected "
+                  + ("room for it on its disk" if full else "a readable file or a writable place"), file=sys.stderr)
         return 2

@@ -30,16 +30,24 @@ import hashlib
 import json
 import os
 import re
+import shutil
+import signal
 import stat
 import subprocess
 import sys
-import tempfile
+import threading
+import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
+from glob import escape as glob_escape
 from pathlib import Path
 from typing import Dict, List, Optional, Sequence
 
 import numpy as np
+
+from . import safe_output
+from .safe_input import check_regular
+from .terminal_text import NAME_LENGTH, safe
 
 MANIFEST_NAME = "inbetween-data.json"
 FILE_FIELDS = {"from_frame", "reference_frame", "fps", "map", "skip"}
@@ -173,14 +181,69 @@ def plan_files(source: DataSource, options: Dict, holdout: Sequence[str], time_s
             map_path = Path(settings["map"])
             if not map_path.is_absolute() and source.manifest is not None and settings["map"] != options.get("map"):
                 map_path = base / map_path
-        group = ""
-        if source.groups:
-            m = re.search(source.groups, name)
-            group = m.group(1) if m and m.groups() else ""
         for scale in [1.0] + [s for s in time_scales if s != 1.0]:
             plans.append(FilePlan(path, name, str(source.folder), int(settings.get("from_frame") or 0),
-                                  settings.get("reference_frame"), settings.get("fps"), map_path, scale, group))
+                                  settings.get("reference_frame"), settings.get("fps"), map_path, scale))
+    if source.groups and plans:
+        names = sorted({p.name for p in plans})
+        groups = dict(zip(names, subject_groups(source.groups, names, str(source.manifest or source.folder))))
+        for plan in plans:
+            plan.group = groups[plan.name]
     return plans
+
+
+GROUPS_SECONDS = 1.0  # as the C# manifest reader's Regex timeout (Tools~/Cli/Scoring/DataManifest.cs)
+
+_GROUPS_CHILD = r"""
+import json, re, signal, sys
+request = json.load(sys.stdin)
+pattern = re.compile(request["pattern"])
+class Slow(Exception):
+    pass
+def alarm(number, frame):
+    raise Slow()
+signal.signal(signal.SIGALRM, alarm)
+groups = []
+for i, name in enumerate(request["names"]):
+    sys.stderr.write(f"{i}\n")  # which name, should the parent have to end this process
+    sys.stderr.flush()
+    signal.setitimer(signal.ITIMER_REAL, request["seconds"])
+    try:
+        m = pattern.search(name)
+    except Slow:
+        print(json.dumps({"slow": i}))
+        sys.exit(0)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+    groups.append(m.group(1) if m and m.groups() else "")
+print(json.dumps({"groups": groups}))
+"""
+
+
+def subject_groups(pattern: str, names: Sequence[str], manifest: str, seconds: float = GROUPS_SECONDS) -> List[str]:
+    """Group 1 of the manifest's `groups` regex on each name ("" when it does not match), each match bounded by
+    `seconds`: Python's `re` has no timeout and backtracks exponentially (`^(a|aa)+$` on a 200-character name
+    never ends), so the matching runs in a child process whose alarm interrupts a slow match (the `re` engine
+    checks signals), and the child itself is ended when it overruns. Refuses a slow pattern in one line."""
+    def slow(name: str) -> ValueError:  # the C# reader's words (Tools~/Cli/Scoring/DataManifest.cs)
+        return _fail(manifest, f"\"groups\" took over {seconds:g} s on \"{safe(name, NAME_LENGTH)}\"",
+                     "expected a pattern that does not backtrack catastrophically")
+    request = json.dumps({"pattern": pattern, "names": list(names), "seconds": seconds})
+    try:
+        r = subprocess.run([sys.executable, "-I", "-c", _GROUPS_CHILD], input=request, capture_output=True,
+                           text=True, timeout=5 + seconds * (len(names) + 1))
+    except subprocess.TimeoutExpired as e:  # an alarm the engine did not see in time: the child was killed
+        started = (e.stderr.decode() if isinstance(e.stderr, bytes) else e.stderr or "").split()
+        raise slow(names[int(started[-1])] if started and started[-1].isdigit() else names[0]) from None
+    try:
+        answer = json.loads(r.stdout)
+    except ValueError:
+        raise _fail(manifest, f"\"groups\" {safe(pattern)} could not be applied "
+                              f"({safe((r.stderr.strip().splitlines() or ['no message'])[-1])})",
+                    "expected a regular expression whose group 1 names a file's subject") from None
+    if "slow" in answer:
+        raise slow(names[answer["slow"]])
+    return answer["groups"]
 
 
 def cli_command() -> List[str]:
@@ -191,16 +254,22 @@ def cli_command() -> List[str]:
     return [str(REPO_ROOT / "Tools~" / "inbetween")]
 
 
+def _as_argument(path) -> str:
+    """A path the tool can never read as an option: absolute, so it starts with "/" (a data file named
+    `--from-frame=5.bvh` is a file, not an option)."""
+    return os.path.abspath(str(path))
+
+
 def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]:
-    args = ["retarget", str(plan.path), "--to", "model", "--out", str(out), "--force"]
+    args = ["retarget", _as_argument(plan.path), "--to", "model", "--out", _as_argument(out), "--force"]
     if plan.from_frame:
         args += ["--from-frame", str(plan.from_frame)]
     if plan.reference_frame is not None:
         args += ["--reference-frame", str(plan.reference_frame)]
     if plan.map is not None:
-        args += ["--map", str(plan.map)]
+        args += ["--map", _as_argument(plan.map)]
     if model:
-        args += ["--model", model]
+        args += ["--model", _as_argument(model)]
     # A time scale s plays the motion s times as long: the file is read as if captured at fps / s.
     if plan.fps is not None or plan.time_scale != 1.0:
         header_fps = plan.fps
@@ -211,7 +280,6 @@ def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]
 
 
 def _frame_time(path: Path) -> float:
-    from .safe_input import check_regular
     check_regular(path, "a BVH file")  # a named pipe would block the read
     with open(path, "r", encoding="utf-8", errors="replace") as f:
         for i, line in enumerate(f):
@@ -228,60 +296,168 @@ def _frame_time(path: Path) -> float:
     raise _fail(path, "has no readable 'Frame Time:' line", "expected a BVH file")
 
 
-def _cache_key(plan: FilePlan, args: List[str]) -> str:
-    st = plan.path.stat()
+def _file_digest(path: Path, max_bytes: Optional[int] = None, expected: str = "a BVH file") -> str:
+    """SHA-256 of the file's bytes, read in chunks. With `max_bytes`, a larger file is refused from its size,
+    before it is read (a sparse 2 GB map cost 2.3 GB of memory when it was read whole to hash it)."""
+    check_regular(path, expected)
+    size = path.stat().st_size
+    if max_bytes is not None and size > max_bytes:
+        raise _fail(path, f"is {size:,} bytes or more", f"expected {expected} of at most {max_bytes:,} bytes")
     h = hashlib.sha256()
-    h.update(json.dumps([str(plan.path.resolve()), st.st_size, int(st.st_mtime), args[3:]]).encode())
-    if plan.map is not None and plan.map.is_file():
-        h.update(plan.map.read_bytes()[:MAX_MANIFEST_BYTES])
+    read = 0
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 20), b""):
+            read += len(chunk)
+            if max_bytes is not None and read > max_bytes:  # it grew while read
+                raise _fail(path, f"is {read:,} bytes or more", f"expected {expected} of at most {max_bytes:,} bytes")
+            h.update(chunk)
+    return h.hexdigest()
+
+
+MAX_MAP_BYTES = 1 << 20  # as the C# JointMap.MaxFileBytes: a map of a few hundred joints is a few kilobytes
+
+
+def tool_version(tool: List[str]) -> str:
+    """What identifies the `inbetween` that retargets: a digest of its command line and of the files it runs
+    (the launcher or any file named in INBETWEEN, and the built assemblies beside it or in Tools~/.build), so a
+    rebuilt tool never reuses entries an older build wrote. Call it after the tool was built."""
+    h = hashlib.sha256(json.dumps(tool).encode())
+    folders = []
+    for word in tool:
+        candidate = Path(word) if os.sep in word else Path(shutil.which(word) or word)
+        if candidate.is_file():
+            h.update(_file_digest(candidate, expected="the inbetween tool").encode())
+            folders.append(candidate.parent)
+    if tool == [str(REPO_ROOT / "Tools~" / "inbetween")]:
+        folders.append(REPO_ROOT / "Tools~" / ".build" / "inbetween")
+    for folder in folders:
+        for name in ("inbetween.dll", "DeltaInterpolator.Core.dll"):
+            if (folder / name).is_file():
+                h.update(_file_digest(folder / name, expected="the inbetween tool").encode())
+    return h.hexdigest()
+
+
+def _cache_key(plan: FilePlan, args: List[str], version: str) -> str:
+    """The entry of one retargeting: the BVH's content (never its path, size or time: a corrected file of equal
+    size with its time kept is a new entry), the options, the map's content and the tool's version."""
+    options = [a for a in args[1:] if a not in (_as_argument(plan.path), _as_argument("OUT"))]
+    h = hashlib.sha256()
+    h.update(json.dumps([_file_digest(plan.path), options, version]).encode())
+    if plan.map is not None:
+        h.update(_file_digest(plan.map, MAX_MAP_BYTES, "a JSON joint map").encode())
     return h.hexdigest()[:20]
+
+
+def _temporary(target: Path, i: int) -> Path:
+    return target.with_name(f".{target.stem}.{os.getpid()}.{i}.tmp.bvh")
 
 
 def retarget_all(plans: List[FilePlan], cache: Path, model: Optional[str] = None, jobs: int = 2,
                  progress: bool = True) -> List[Path]:
-    """Each plan through `inbetween retarget` (cached under `cache` by file, settings and map)."""
+    """Each plan through `inbetween retarget` (cached under `cache` by the file's content, settings, map and the
+    tool's version). SIGINT, SIGTERM or SIGHUP, or one file failing, ends the running children (their process
+    groups) and removes their temporary files before the error or exit goes on."""
     cache.mkdir(parents=True, exist_ok=True)
     tool = cli_command()
+    if tool == [str(REPO_ROOT / "Tools~" / "inbetween")]:
+        # Build it first, once (each parallel call would otherwise wait on the build lock), so that its version
+        # below is the one that retargets.
+        subprocess.run(tool + ["--help"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False,
+                       stdin=subprocess.DEVNULL)
+    version = tool_version(tool)
     outputs: List[Optional[Path]] = [None] * len(plans)
     work = []
     for i, plan in enumerate(plans):
         args = _retarget_args(plan, Path("OUT"), model)
-        target = cache / f"{_cache_key(plan, args)}.bvh"
+        target = cache / f"{_cache_key(plan, args, version)}.bvh"
         outputs[i] = target
         if not target.exists():
             work.append((i, plan, target))
-    if work and tool == [str(REPO_ROOT / "Tools~" / "inbetween")]:
-        # Build once, before the parallel calls (each would otherwise wait on the build lock).
-        subprocess.run(tool + ["--help"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
     bar = None
     if progress and work:
         from tqdm import tqdm
         bar = tqdm(total=len(work), desc="retargeting (inbetween retarget)", unit="file")
+    running: Dict[int, subprocess.Popen] = {}
+    lock = threading.Lock()
+    stopping = threading.Event()
 
     def one(item):
         i, plan, target = item
-        tmp = target.with_name(f".{target.stem}.{os.getpid()}.{i}.tmp.bvh")
+        tmp = _temporary(target, i)
         args = _retarget_args(plan, tmp, model)
-        r = subprocess.run(tool + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                           stdin=subprocess.DEVNULL)
-        if r.returncode != 0 or not tmp.exists():
+        with lock:  # never start a child once stopping (the cleanup below would miss it)
+            if stopping.is_set():
+                return
+            child = subprocess.Popen(tool + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                     stdin=subprocess.DEVNULL, start_new_session=True)
+            running[i] = child
+        try:
+            out, err = child.communicate()
+        finally:
+            with lock:
+                running.pop(i, None)
+        if stopping.is_set():
+            return
+        if child.returncode != 0 or not tmp.exists():
             if tmp.exists():
                 tmp.unlink()
-            message = (r.stderr.strip().splitlines() or r.stdout.strip().splitlines() or ["no message"])[-1]
-            raise ValueError(f"{plan.path}: `inbetween retarget` failed (exit {r.returncode}): {message}; "
+            message = (err.strip().splitlines() or out.strip().splitlines() or ["no message"])[-1]
+            raise ValueError(f"{plan.path}: `inbetween retarget` failed (exit {child.returncode}): {message}; "
                              "expected a humanoid BVH the built-in joint maps or the manifest's \"map\" cover")
         os.replace(tmp, target)
         if bar is not None:
             bar.update(1)
 
+    previous = safe_output.exit_on_terminate()  # SIGTERM, SIGHUP → SystemExit here, so the cleanup runs
+    pool = ThreadPoolExecutor(max_workers=max(1, jobs))
     try:
-        with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-            for _ in pool.map(one, work):
-                pass
+        for _ in pool.map(one, work):
+            pass
+    except BaseException:
+        stopping.set()
+        _end_children(running, lock)
+        pool.shutdown(wait=True, cancel_futures=True)
+        for i, _, target in work:
+            _remove_temporaries(_temporary(target, i))
+        raise
     finally:
+        pool.shutdown(wait=True)
+        safe_output.restore_signals(previous)
         if bar is not None:
             bar.close()
     return [p for p in outputs if p is not None]
+
+
+def _end_children(running: Dict[int, "subprocess.Popen"], lock: threading.Lock, grace: float = 5.0) -> None:
+    """SIGTERM to each running child's process group (the launcher and the dotnet it runs), then SIGKILL to any
+    still running after `grace` seconds."""
+    with lock:
+        children = list(running.values())
+    for sig in (signal.SIGTERM, signal.SIGKILL):
+        for child in children:
+            if child.poll() is None:
+                try:
+                    os.killpg(child.pid, sig)
+                except (ProcessLookupError, PermissionError):
+                    pass
+        deadline = time.monotonic() + grace
+        for child in children:
+            try:
+                child.wait(max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                pass
+        if all(child.poll() is not None for child in children):
+            return
+
+
+def _remove_temporaries(tmp: Path) -> None:
+    """Our temporary output and the tool's own temporary files beside it (`.NAME.XXXXXXXX.tmp`, left when the
+    tool had to be killed)."""
+    for path in [tmp, *tmp.parent.glob(f".{glob_escape(tmp.name)}.*.tmp")]:
+        try:
+            path.unlink()
+        except OSError:
+            pass
 
 
 def prepare_any(data: Sequence[str], out: str, holdout: Sequence[str] = (), options: Optional[Dict] = None,

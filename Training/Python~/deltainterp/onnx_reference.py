@@ -12,6 +12,8 @@ from typing import Callable, Dict, List
 
 import numpy as np
 
+from .operators import ALLOWED, FORBIDDEN
+
 Array = np.ndarray
 
 
@@ -196,10 +198,55 @@ OPS: Dict[str, Callable] = {
 }
 
 
-def run_graph(graph, feeds: Dict[str, Array]) -> Dict[str, Array]:
-    """Evaluate an onnx.GraphProto on numpy inputs; returns every graph output by name."""
+# The int8 operators `quantize` writes (ONNX Runtime only); with operators.ALLOWED, what the model contract admits.
+QUANTIZED = {"DynamicQuantizeLinear", "MatMulInteger", "com.microsoft::DynamicQuantizeMatMul"}
+
+
+class UnsupportedOperatorError(ValueError):
+    """A graph holds a node this evaluator must not or cannot run; the message is `FILE: what; expected`."""
+
+
+def _operator(node) -> str:
+    return node.op_type if node.domain in ("", "ai.onnx") else f"{node.domain}::{node.op_type}"
+
+
+def check_runnable(graph, source: str = "model") -> None:
+    """Refuses, before any node runs, a graph with a node outside the model contract (operators.ALLOWED and the
+    int8 operators of `quantize`) or one this evaluator lacks: a `Loop` of 10^12 trips, an `If`, a subgraph or a
+    custom domain never runs, and a missing operator is one line instead of a NotImplementedError traceback."""
+    import onnx
+    for node in graph.node:
+        operator = _operator(node)
+        name = operator if len(operator) <= 64 else operator[:64] + "…"
+        node_name = f" (node {node.name[:80]!r})" if node.name else ""
+        if operator not in ALLOWED and operator not in QUANTIZED:
+            # The C# ModelOperators.Check's words, so both languages refuse a graph alike.
+            why = FORBIDDEN.get(operator, "not imported by both Sentis 2.x and Barracuda")
+            raise UnsupportedOperatorError(
+                f"{source}: the graph uses the operator {name}{node_name} outside the model contract, so nothing was "
+                f"run ({name}: {why}); expected only the operators listed in Documentation~/model-contract.md "
+                "(Operators), as python3 -m deltainterp export writes them")
+        if any(a.type in (onnx.AttributeProto.GRAPH, onnx.AttributeProto.GRAPHS) for a in node.attribute):
+            raise UnsupportedOperatorError(
+                f"{source}: the graph's node {name}{node_name} holds a subgraph, so nothing was run; expected a "
+                "graph without control flow, as python3 -m deltainterp export writes it")
+        if operator not in RUNNABLE:
+            raise UnsupportedOperatorError(
+                f"{source}: the graph uses the operator {name}{node_name}, which the trainer's reference evaluator "
+                "(deltainterp/onnx_reference.py) lacks, so nothing was run; expected the operators python3 -m "
+                "deltainterp export and quantize write")
+
+
+# What run_graph can evaluate, spelled as _operator spells it (the contrib operator only in its own domain).
+RUNNABLE = {op for op in OPS if op != "DynamicQuantizeMatMul"} | {"com.microsoft::DynamicQuantizeMatMul"}
+
+
+def run_graph(graph, feeds: Dict[str, Array], source: str = "model") -> Dict[str, Array]:
+    """Evaluate an onnx.GraphProto on numpy inputs; returns every graph output by name. Every node is checked
+    before the first runs (check_runnable)."""
     import onnx
     import onnx.numpy_helper
+    check_runnable(graph, source)
     values: Dict[str, Array] = {init.name: onnx.numpy_helper.to_array(init) for init in graph.initializer}
     for inp in graph.input:
         if inp.name in values:
@@ -224,6 +271,7 @@ def run_model(model, feeds: Dict[str, Array]) -> Dict[str, Array]:
     """`model`: an onnx.ModelProto or a path."""
     import onnx
     import onnx.numpy_helper
+    source = "model"
     if not hasattr(model, "graph"):
-        model = onnx.load(str(model))
-    return run_graph(model.graph, feeds)
+        source, model = str(model), onnx.load(str(model))
+    return run_graph(model.graph, feeds, source)  # every node checked before the first runs

@@ -71,7 +71,8 @@ def _tensors(graph) -> Iterator:
 
 def load_onnx(path: PathLike, expected: str = "an exported whole graph (.onnx)"):
     """The ONNX model at `path`, read without following external data; refuses (`InputPathError`) a path that is
-    not a regular file, a file onnx cannot parse, and any tensor stored in another file."""
+    not a regular file, a file onnx cannot parse, any tensor stored in another file, and any node outside the
+    model contract or the reference evaluator (onnx_reference.check_runnable), before any of it runs."""
     import onnx
 
     check_regular(path, expected)
@@ -87,7 +88,19 @@ def load_onnx(path: PathLike, expected: str = "an exported whole graph (.onnx)")
                                      "expected a self-contained model (our export never uses external data)")
     except RecursionError:
         raise InputPathError(path, "has subgraphs nested too deeply", "expected " + expected) from None
+    from .onnx_reference import UnsupportedOperatorError, check_runnable
+    try:
+        check_runnable(proto.graph, str(path))  # before anything runs it: no Loop, If or unknown operator
+    except UnsupportedOperatorError as e:
+        raise _as_input_error(path, e) from None
     return proto
+
+
+def _as_input_error(path: PathLike, e: ValueError) -> InputPathError:
+    """`e` (already `PATH: what; expected`) as an InputPathError, which callers catch."""
+    error = InputPathError(path, "", "")
+    error.args = (str(e),)
+    return error
 
 
 __all__ = ["InputPathError", "check_regular", "describe", "load_onnx"]

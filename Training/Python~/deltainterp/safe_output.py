@@ -5,16 +5,29 @@ another non-regular file, an existing file without `--force`, one of the command
 folder is not writable. Then `write`/`write_text`/`write_bytes` write everything into a temporary file
 beside the target (`.NAME.XXXXXXXX.tmp`), flush it to disk and rename it over the target, so a failing or
 interrupted write leaves an existing file byte-identical and never leaves half a file.
+
+A target that `check` found missing is claimed exclusively when the write ends (a hard link, which fails when the
+name exists, as the C# `OutputFile` does): two runs without `--force` to one new path cannot both succeed; the
+second refuses (`PATH: appeared while this command ran ...`) and the first run's file stays.
+A failed write (a full disk) raises an `OSError` that names the target, and the writer's half-written zip
+(numpy's `.npz`) is not left to complain from the garbage collector.
 """
 from __future__ import annotations
 
+import errno
 import os
+import signal
 import stat
+import threading
 import uuid
 from pathlib import Path
-from typing import BinaryIO, Callable, Iterable, Optional, Union
+from typing import BinaryIO, Callable, Iterable, Optional, Set, Union
 
 PathLike = Union[str, os.PathLike]
+
+# Absolute targets that `check` found missing: `write` must then create them exclusively (see the module doc).
+_checked_as_new: Set[Path] = set()
+_checked_lock = threading.Lock()
 
 
 class OutputPathError(ValueError):
@@ -56,6 +69,11 @@ def check(path: PathLike, force: bool = False, inputs: Iterable[Optional[PathLik
         if not force:
             raise OutputPathError(path, "already exists", "expected a new path, or --force to replace it")
     _probe_writable(_nearest_existing_folder(full.parent, path), path)
+    with _checked_lock:
+        if os.path.lexists(full):
+            _checked_as_new.discard(full)
+        else:
+            _checked_as_new.add(full)
     return full
 
 
@@ -94,27 +112,119 @@ def write(path: PathLike, writer: Callable[[BinaryIO], None]) -> Path:
     full = Path(os.path.abspath(path))
     full.parent.mkdir(parents=True, exist_ok=True)
     temporary = temporary_name(full)
-    previous = _exit_on_terminate()
+    with _checked_lock:
+        must_be_new = full in _checked_as_new
+        _checked_as_new.discard(full)
+    previous = exit_on_terminate()
+    guarded: Optional[_GuardedFile] = None
     try:
-        with open(temporary, "xb") as f:
-            writer(f)
-            f.flush()
-            os.fsync(f.fileno())
-        _rename(temporary, full)
-    except BaseException:  # KeyboardInterrupt (SIGINT) and SystemExit (SIGTERM, below) too: never leave it behind
+        with open(temporary, "xb") as raw:
+            guarded = _GuardedFile(raw)
+            try:
+                writer(guarded)
+                guarded.flush()
+                os.fsync(raw.fileno())
+            except OSError as e:
+                guarded.failed = e  # a zip the writer left open now closes quietly (see _GuardedFile)
+                raise
+        if must_be_new:
+            _publish_new(temporary, full, path)
+        else:
+            _rename(temporary, full)
+    except (KeyboardInterrupt, SystemExit):  # SIGINT, and SIGTERM/SIGHUP (below): never leave it behind
         _try_delete(temporary)
         raise
+    except BaseException as e:
+        _try_delete(temporary)
+        # The disk's error, even where the writer turned it into its own (torch.save: "RuntimeError: [enforce
+        # fail at inline_container.cc] unexpected pos"), naming the target rather than the temporary file.
+        failure = guarded.failed if guarded is not None and guarded.failed is not None else e
+        if isinstance(failure, OSError) and failure.filename is None:
+            raise OSError(failure.errno, failure.strerror or str(failure), str(path)) from None
+        if failure is not e:
+            raise failure from None
+        raise
     finally:
-        _restore(previous)
+        restore_signals(previous)
     return full
 
 
-def _exit_on_terminate():
-    """While a write is under way, SIGTERM and SIGHUP raise SystemExit (143, 129) instead of ending the process
-    at once, so the `except` above deletes the temporary file (SIGINT already raises KeyboardInterrupt).
+class _GuardedFile:
+    """The writer's view of the temporary file. After a write, flush or fsync failed (a full disk), every later
+    write, flush and seek succeeds without touching the file (tell counts on as if it had): numpy's `savez`
+    leaves its ZipFile open when a write fails, and the ZipFile's `__del__` would otherwise write its directory
+    again (into a closed or full file) and print an "Exception ignored in ZipFile.__del__" traceback after our
+    one-line error."""
+
+    def __init__(self, raw: BinaryIO) -> None:
+        self._raw = raw
+        self._position = 0
+        self.failed: Optional[BaseException] = None
+
+    def _dead(self) -> bool:
+        return self.failed is not None or self._raw.closed
+
+    def write(self, data) -> int:
+        n = memoryview(data).nbytes
+        if not self._dead():
+            try:
+                n = self._raw.write(data)
+            except OSError as e:
+                self.failed = e
+                raise
+        self._position += n
+        return n
+
+    def flush(self) -> None:
+        if self._dead():
+            return
+        try:
+            self._raw.flush()
+        except OSError as e:
+            self.failed = e
+            raise
+
+    def seek(self, offset: int, whence: int = 0) -> int:
+        if not self._dead():
+            self._position = self._raw.seek(offset, whence)
+        elif whence == 0:
+            self._position = offset
+        elif whence == 1:
+            self._position += offset
+        return self._position
+
+    def tell(self) -> int:
+        return self._position
+
+    def __getattr__(self, name):
+        return getattr(self._raw, name)
+
+
+def _publish_new(temporary: Path, target: Path, shown: PathLike) -> None:
+    """Gives the finished temporary file the name `target` only if no file has that name: link(2), which fails
+    when the name exists, then unlink (atomic). Where hard links are not supported, a rename after a last check
+    (what the file system allows)."""
+    try:
+        os.link(temporary, target)
+    except FileExistsError:
+        raise OutputPathError(shown, "appeared while this command ran (another run wrote it?)",
+                              "expected a new path, or --force to replace it") from None
+    except OSError as e:
+        if e.errno not in (errno.EPERM, errno.ENOTSUP, errno.EOPNOTSUPP, errno.EXDEV, errno.EMLINK, errno.ENOSYS):
+            raise
+        if os.path.lexists(target):
+            raise OutputPathError(shown, "appeared while this command ran (another run wrote it?)",
+                                  "expected a new path, or --force to replace it") from None
+        _rename(temporary, target)
+        return
+    _try_delete(temporary)
+
+
+def exit_on_terminate():
+    """While a write (or `prepare`'s retargeting, datasets.retarget_all) is under way, SIGTERM and SIGHUP raise
+    SystemExit (143, 129) instead of ending the process at once, so the `except` above deletes the temporary file
+    (and retarget_all ends its children); SIGINT already raises KeyboardInterrupt.
     Only the main thread may set handlers; elsewhere this does nothing. Returns what to restore."""
-    import signal
-    import threading
     if threading.current_thread() is not threading.main_thread():
         return None
     previous = {}
@@ -136,8 +246,7 @@ def _raise_exit(number, frame) -> None:
     raise SystemExit(128 + number)
 
 
-def _restore(previous) -> None:
-    import signal
+def restore_signals(previous) -> None:
     for number, handler in (previous or {}).items():
         try:
             signal.signal(number, handler)
@@ -176,4 +285,5 @@ def _try_delete(path: Path) -> None:
         pass  # hidden and named as ours; leaving it is better than masking the real error
 
 
-__all__ = ["OutputPathError", "check", "write", "write_bytes", "write_text", "append_text", "temporary_name"]
+__all__ = ["OutputPathError", "check", "write", "write_bytes", "write_text", "append_text", "temporary_name",
+           "exit_on_terminate", "restore_signals"]

@@ -30,6 +30,7 @@ from .checkpoint import LoadedModel
 from .kinematics import forward_kinematics
 from .model import DeltaInterpolator, ModelConfig, preset
 from .skeleton import Skeleton
+from .terminal_text import LINE_LENGTH, safe
 from .transition import run_transition
 
 
@@ -113,7 +114,7 @@ def main(argv=None) -> int:
         message = f"{e.filename}: {e.strerror}; expected a readable file" if isinstance(e, OSError) and e.filename \
             else (str(e) if isinstance(e, safe_output.OutputPathError) else f"{args.config}: not JSON ({e}); expected "
                   "the model's 'deltainterp' metadata JSON")
-        print(f"error: {message}", file=sys.stderr)
+        print(f"error: {safe(message, LINE_LENGTH)}", file=sys.stderr)
         return 2
     torch.set_num_threads(args.threads)
     lengths = [int(v) for v in args.lengths.split(",") if v.strip()]

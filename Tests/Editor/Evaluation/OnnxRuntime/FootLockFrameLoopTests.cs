@@ -1,3 +1,5 @@
+using DeltaInterpolator.Core.Scheduling;
+using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -115,7 +117,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>
-        /// A character on the model's skeleton in Unity's space (metres, left-handed: <see cref="NameJointMap"/> converts)
+        /// A character on the model's skeleton in Unity's space (metres, left-handed: <see cref="NamePoseConverter"/> converts)
         /// playing the walk as its own animation at a fixed frame rate; feet are measured in the model's space.
         /// </summary>
         private sealed class WalkLoop
@@ -129,7 +131,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double[] _localPositions;
             private readonly double[] _modelRoot = new double[3];
             private readonly double[] _modelRotations;
-            private readonly NameJointMap _map;
+            private readonly NamePoseConverter _map;
+            private readonly MainThreadScheduler _scheduler;
             private ArrayPoseStream _stream;
             private int _frame;
 
@@ -144,8 +147,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 _globalRotations = new double[4 * j];
                 _localPositions = new double[3 * j];
                 _modelRotations = new double[4 * j];
-                _map = new NameJointMap(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
-                Player = new TransitionPlayer(_map, new MainThreadDecoder(model), new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
+                _map = new NamePoseConverter(c.Skeleton, c.UnitScale, _clip.Skeleton.Names);
+                _scheduler = new MainThreadScheduler(model);
+                Player = new TransitionPlayer(_map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
                 _stream = new ArrayPoseStream(new double[3], new double[4 * j]);
                 _frame = -1;
             }
@@ -163,6 +167,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 _frame++;
                 Sample(Time, _stream.Root, _stream.Rotations);
+                _scheduler.Pump();
                 Player.Step(Time, ref _stream);
             }
 

@@ -42,7 +42,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Transition whole = c.ToTransition(model.Contract.Skeleton);
             model.Inbetween(whole);
             Transition lazy = c.ToTransition(model.Contract.Skeleton);
-            LazyDecoder decoder = model.CreateLazy(c.PastFrames, c.Gap);
+            LazyInbetweener decoder = model.CreateLazy(c.PastFrames, c.Gap);
             decoder.Begin(lazy);
             for (int k = 0; k < c.Gap; k++) decoder.DecodeFrame(k);
             Assert.That(GoldenParityTests.MaxAbs(lazy.LocalRotations, whole.LocalRotations), Is.LessThan(1e-5));

@@ -49,4 +49,13 @@ namespace UnityEngine
     {
         public TooltipAttribute(string tooltip) => throw null!;
     }
+
+    // source: unity:Runtime/Export/Scripting/Attributes.cs
+    [AttributeUsage(AttributeTargets.Class)]
+    public partial class DefaultExecutionOrder : Attribute
+    {
+        public DefaultExecutionOrder(int order) => throw null!;
+
+        public int order => throw null!;
+    }
 }

@@ -9,6 +9,10 @@ namespace Unity.Profiling
 
         public AutoScope Auto() => throw null!;
 
+        public void Begin() => throw null!;
+
+        public void End() => throw null!;
+
         public partial struct AutoScope : IDisposable
         {
             public void Dispose() => throw null!;

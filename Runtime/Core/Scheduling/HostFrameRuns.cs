@@ -1,0 +1,191 @@
+using System;
+using DeltaInterpolator.Core.Inference;
+
+namespace DeltaInterpolator.Core.Scheduling
+{
+    /// <summary>
+    /// Lazy frames with <c>key_memory</c> on the host: every keys run's output is read back into each request's
+    /// <see cref="TransitionRequest.KeyMemory"/>, and the next frames of every playing request with the same number of
+    /// past keys are gathered into one batch of the frame graph (rows may differ in gap length and frame), due frames
+    /// first, then those ahead of playback.
+    /// </summary>
+    internal sealed class HostFrameRuns : LazyFrameRuns
+    {
+        public HostFrameRuns(BatchPump pump)
+            : base(pump)
+        {
+        }
+
+        public override void Collect(BatchBuffers buffers)
+        {
+            CollectKeys(buffers);
+            CollectFrames(buffers);
+        }
+
+        public override int Run(int tokenBudget, int framesPerRequest)
+        {
+            int spent = RunAllKeys(tokenBudget);
+            Pump.Timer?.Begin(ScheduleStage.Frames);
+            for (int round = 0; round < framesPerRequest; round++)
+            {
+                int before = spent;
+                // Due frames first (decoded ≤ needed), then those ahead of playback.
+                for (int urgency = BatchPlanner.Due; urgency <= BatchPlanner.Ahead; urgency++)
+                {
+                    for (int i = 0; i < Pump.Active.Count; i++)
+                    {
+                        TransitionRequest request = Pump.Active[i];
+                        if (BatchPlanner.FrameUrgency(request) != urgency) continue;
+                        BatchBuffers group = Pump.BuffersFor(request.Transition.PastFrames);
+                        if (group.FramePending != null) continue;
+                        group.Scratch.Add(request);
+                    }
+                }
+
+                for (int g = 0; g < Pump.Buffers.Count; g++)
+                {
+                    BatchBuffers group = Pump.Buffers[g];
+                    while (group.Scratch.Count > 0 && group.FramePending == null)
+                    {
+                        int used = RunFrames(group, tokenBudget - spent, spent == 0);
+                        if (used == 0) break;
+                        spent += used;
+                        group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / Pump.FramesPerRun));
+                    }
+
+                    group.Scratch.Clear();
+                }
+
+                if (spent == before) break;
+            }
+
+            Pump.Timer?.End(ScheduleStage.Frames);
+            return spent;
+        }
+
+        protected override void ScatterKeys(BatchBuffers group, int rows, IInferenceBinding binding)
+        {
+            float[] memory = group.Keys!.KeyMemory!.Floats!;
+            int size = group.MemorySize;
+            for (int r = 0; r < rows; r++)
+            {
+                TransitionRequest request = group.KeysRequests[r]!;
+                group.KeysRequests[r] = null;
+                request.InFlight = false;
+                if (request.KeyMemory == null || request.KeyMemory.Length != size) request.KeyMemory = new float[size];
+                Array.Copy(memory, r * size, request.KeyMemory, 0, size);
+                request.Encoded = true;
+            }
+        }
+
+        private int RunFrames(BatchBuffers group, int budget, bool first)
+        {
+            int per = Pump.FramesPerRun;
+            int rows = group.Ensure(BatchPlanner.RowsThatFit(group.Scratch.Count, Pump.MaxBatch, budget, per, first));
+            if (rows <= 0) return 0;
+            GraphTensors tensors = group.Frame!;
+            float[] memory = tensors.KeyMemory!.Floats!;
+            int size = group.MemorySize;
+            for (int r = 0; r < rows; r++)
+            {
+                TransitionRequest request = group.Scratch[r];
+                // A row that already holds this request's key encoding (the same requests in the same order as
+                // the last run: the steady state of a playing crowd) is not copied again.
+                if (!ReferenceEquals(group.RowOwner[r], request) || group.RowGeneration[r] != request.Generation)
+                {
+                    Array.Copy(request.KeyMemory!, 0, memory, r * size, size);
+                    group.RowOwner[r] = request;
+                    group.RowGeneration[r] = request.Generation;
+                }
+
+                int n = request.Transition.MissingFrames;
+                int from = request.Decoded;
+                tensors.SetKeyRow(r, n);
+                // Frames from..from+N−1, the ones past the gap repeated as its last (computed, not used).
+                long[] query = tensors.QueryFrameIndices!.Longs!;
+                for (int q = 0; q < per; q++) query[r * per + q] = group.Past + Math.Min(from + q, n - 1);
+                group.FrameRequests[r] = request;
+                group.FrameIndex[r] = from;
+            }
+
+            IInferenceBinding binding;
+            try
+            {
+                binding = group.FrameBinding(rows, Pump.Model.FrameBackend!);
+            }
+            catch (Exception e)
+            {
+                BatchPump.Fail(group.FrameRequests, rows, e);
+                return 0;
+            }
+
+            Pump.Count(rows, rows * per);
+            if (Pump.Async && binding is IAsyncInferenceBinding scheduled)
+            {
+                for (int r = 0; r < rows; r++) group.FrameRequests[r]!.InFlight = true;
+                try
+                {
+                    scheduled.Schedule();
+                }
+                catch (Exception e)
+                {
+                    BatchPump.Fail(group.FrameRequests, rows, e);
+                    return rows * per;
+                }
+
+                group.FramePending = scheduled;
+                group.FramePendingRows = rows;
+                return rows * per;
+            }
+
+            try
+            {
+                binding.Run();
+            }
+            catch (Exception e)
+            {
+                BatchPump.Fail(group.FrameRequests, rows, e);
+                return rows * per;
+            }
+
+            ScatterFrames(group, rows);
+            return rows * per;
+        }
+
+        private void ScatterFrames(BatchBuffers group, int rows)
+        {
+            for (int r = 0; r < rows; r++)
+            {
+                TransitionRequest request = group.FrameRequests[r]!;
+                group.FrameRequests[r] = null;
+                request.InFlight = false;
+                if (request.Cancelled) continue;
+                Pump.Publish(request, group.Frame!, r, group.FrameIndex[r]);
+            }
+        }
+
+        private void CollectFrames(BatchBuffers group)
+        {
+            if (group.FramePending != null)
+            {
+                bool done;
+                try
+                {
+                    done = group.FramePending.TryComplete();
+                }
+                catch (Exception e)
+                {
+                    BatchPump.Fail(group.FrameRequests, group.FramePendingRows, e);
+                    group.FramePending = null;
+                    done = false;
+                }
+
+                if (done)
+                {
+                    group.FramePending = null;
+                    ScatterFrames(group, group.FramePendingRows);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,139 @@
+using System;
+using DeltaInterpolator.Core.Inference;
+
+namespace DeltaInterpolator.Core.Scheduling
+{
+    /// <summary>
+    /// The lazy strategies' common half: the keys of new requests, oldest first, run as one batch of the keys graph per
+    /// number of past keys (K = P + 1 tokens a row); where their <c>key_memory</c> goes and how frames run is the
+    /// subclass's (<see cref="HostFrameRuns"/>, <see cref="DeviceFrameRuns"/>).
+    /// </summary>
+    internal abstract class LazyFrameRuns : RunStrategy
+    {
+        protected LazyFrameRuns(BatchPump pump)
+            : base(pump)
+        {
+        }
+
+        /// <summary>Keys runs of every request waiting for its keys, within the budget; returns the tokens spent.</summary>
+        protected int RunAllKeys(int tokenBudget)
+        {
+            Pump.Timer?.Begin(ScheduleStage.Keys);
+            int spent = 0;
+            for (int i = 0; i < Pump.Active.Count; i++)
+            {
+                TransitionRequest request = Pump.Active[i];
+                if (!BatchPlanner.WantsKeys(request)) continue;
+                BatchBuffers group = Pump.BuffersFor(request.Transition.PastFrames);
+                if (group.KeysPending != null) continue;
+                group.Scratch.Add(request);
+            }
+
+            for (int g = 0; g < Pump.Buffers.Count; g++)
+            {
+                BatchBuffers group = Pump.Buffers[g];
+                // One run per MaxBatch rows (all of them in one run when batched).
+                while (group.Scratch.Count > 0 && group.KeysPending == null)
+                {
+                    int used = RunKeys(group, tokenBudget - spent, spent == 0);
+                    if (used == 0) break;
+                    spent += used;
+                    group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / (group.Past + 1)));
+                }
+
+                group.Scratch.Clear();
+            }
+
+            Pump.Timer?.End(ScheduleStage.Keys);
+            return spent;
+        }
+
+        /// <summary>Where a finished keys run's <c>key_memory</c> goes (read back to the host, or kept on the device).</summary>
+        protected abstract void ScatterKeys(BatchBuffers group, int rows, IInferenceBinding binding);
+
+        protected void CollectKeys(BatchBuffers group)
+        {
+            if (group.KeysPending != null)
+            {
+                bool done;
+                try
+                {
+                    done = group.KeysPending.TryComplete();
+                }
+                catch (Exception e)
+                {
+                    BatchPump.Fail(group.KeysRequests, group.KeysPendingRows, e);
+                    group.KeysPending = null;
+                    done = false;
+                }
+
+                if (done)
+                {
+                    IAsyncInferenceBinding binding = group.KeysPending!;
+                    group.KeysPending = null;
+                    ScatterKeys(group, group.KeysPendingRows, binding);
+                }
+            }
+        }
+
+        private int RunKeys(BatchBuffers group, int budget, bool first)
+        {
+            int k = group.Past + 1;
+            int rows = group.Ensure(BatchPlanner.RowsThatFit(group.Scratch.Count, Pump.MaxBatch, budget, k, first));
+            if (rows <= 0) return 0;
+            GraphTensors tensors = group.Keys!;
+            float[] features = tensors.KeyFeatures!.Floats!;
+            int width = k * Pump.Contract.KeyFeatureSize;
+            for (int r = 0; r < rows; r++)
+            {
+                TransitionRequest request = group.Scratch[r];
+                Array.Copy(request.KeyFeatures, 0, features, r * width, width);
+                tensors.SetKeyRow(r, request.Transition.MissingFrames);
+                group.KeysRequests[r] = request;
+            }
+
+            IInferenceBinding binding;
+            try
+            {
+                binding = group.KeysBinding(rows, Pump.Model.KeysBackend!);
+            }
+            catch (Exception e)
+            {
+                BatchPump.Fail(group.KeysRequests, rows, e);
+                return 0;
+            }
+
+            Pump.Count(rows, rows * k);
+            if (Pump.Async && binding is IAsyncInferenceBinding scheduled)
+            {
+                for (int r = 0; r < rows; r++) group.KeysRequests[r]!.InFlight = true;
+                try
+                {
+                    scheduled.Schedule();
+                }
+                catch (Exception e)
+                {
+                    BatchPump.Fail(group.KeysRequests, rows, e);
+                    return rows * k;
+                }
+
+                group.KeysPending = scheduled;
+                group.KeysPendingRows = rows;
+                return rows * k;
+            }
+
+            try
+            {
+                binding.Run();
+            }
+            catch (Exception e)
+            {
+                BatchPump.Fail(group.KeysRequests, rows, e);
+                return rows * k;
+            }
+
+            ScatterKeys(group, rows, binding);
+            return rows * k;
+        }
+    }
+}
