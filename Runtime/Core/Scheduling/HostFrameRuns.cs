@@ -119,36 +119,16 @@ namespace DeltaInterpolator.Core.Scheduling
                 return 0;
             }
 
-            Pump.Count(rows, rows * per);
-            if (Pump.Async && binding is IAsyncInferenceBinding scheduled)
+            if (Pump.RunOrSchedule(binding, group.FrameRequests, rows, rows * per, out IAsyncInferenceBinding? pending))
             {
-                for (int r = 0; r < rows; r++) group.FrameRequests[r]!.InFlight = true;
-                try
-                {
-                    scheduled.Schedule();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.FrameRequests, rows, e);
-                    return rows * per;
-                }
-
-                group.FramePending = scheduled;
+                ScatterFrames(group, rows);
+            }
+            else if (pending != null)
+            {
+                group.FramePending = pending;
                 group.FramePendingRows = rows;
-                return rows * per;
             }
 
-            try
-            {
-                binding.Run();
-            }
-            catch (Exception e)
-            {
-                BatchPump.Fail(group.FrameRequests, rows, e);
-                return rows * per;
-            }
-
-            ScatterFrames(group, rows);
             return rows * per;
         }
 

@@ -103,36 +103,16 @@ namespace DeltaInterpolator.Core.Scheduling
                 return 0;
             }
 
-            Pump.Count(rows, rows * k);
-            if (Pump.Async && binding is IAsyncInferenceBinding scheduled)
+            if (Pump.RunOrSchedule(binding, group.KeysRequests, rows, rows * k, out IAsyncInferenceBinding? pending))
             {
-                for (int r = 0; r < rows; r++) group.KeysRequests[r]!.InFlight = true;
-                try
-                {
-                    scheduled.Schedule();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.KeysRequests, rows, e);
-                    return rows * k;
-                }
-
-                group.KeysPending = scheduled;
+                ScatterKeys(group, rows, binding);
+            }
+            else if (pending != null)
+            {
+                group.KeysPending = pending;
                 group.KeysPendingRows = rows;
-                return rows * k;
             }
 
-            try
-            {
-                binding.Run();
-            }
-            catch (Exception e)
-            {
-                BatchPump.Fail(group.KeysRequests, rows, e);
-                return rows * k;
-            }
-
-            ScatterKeys(group, rows, binding);
             return rows * k;
         }
     }
