@@ -214,6 +214,23 @@ namespace DeltaInterpolator.Core.Scheduling
             return true;
         }
 
+        /// <summary>Whether a scheduled run is over; one that failed ends its first <paramref name="rows"/> requests with the error.</summary>
+        /// <returns>True when it finished or failed (it is no longer pending); <paramref name="finished"/>: it finished, so its outputs can be scattered.</returns>
+        internal static bool IsOver(IAsyncInferenceBinding pending, TransitionRequest?[] requests, int rows, out bool finished)
+        {
+            try
+            {
+                finished = pending.TryComplete();
+                return finished;
+            }
+            catch (Exception e)
+            {
+                Fail(requests, rows, e);
+                finished = false;
+                return true;
+            }
+        }
+
         /// <summary>
         /// Decodes row <paramref name="r"/> of a frame run (its <see cref="FramesPerRun"/> output rows) into the request's
         /// frames from <paramref name="from"/> on (those within its gap) and publishes each.

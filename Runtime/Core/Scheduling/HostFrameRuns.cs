@@ -146,26 +146,10 @@ namespace DeltaInterpolator.Core.Scheduling
 
         private void CollectFrames(BatchBuffers group)
         {
-            if (group.FramePending != null)
-            {
-                bool done;
-                try
-                {
-                    done = group.FramePending.TryComplete();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.FrameRequests, group.FramePendingRows, e);
-                    group.FramePending = null;
-                    done = false;
-                }
-
-                if (done)
-                {
-                    group.FramePending = null;
-                    ScatterFrames(group, group.FramePendingRows);
-                }
-            }
+            IAsyncInferenceBinding? pending = group.FramePending;
+            if (pending == null || !BatchPump.IsOver(pending, group.FrameRequests, group.FramePendingRows, out bool finished)) return;
+            group.FramePending = null;
+            if (finished) ScatterFrames(group, group.FramePendingRows);
         }
     }
 }

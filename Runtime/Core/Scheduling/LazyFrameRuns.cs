@@ -53,27 +53,10 @@ namespace DeltaInterpolator.Core.Scheduling
 
         protected void CollectKeys(BatchBuffers group)
         {
-            if (group.KeysPending != null)
-            {
-                bool done;
-                try
-                {
-                    done = group.KeysPending.TryComplete();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.KeysRequests, group.KeysPendingRows, e);
-                    group.KeysPending = null;
-                    done = false;
-                }
-
-                if (done)
-                {
-                    IAsyncInferenceBinding binding = group.KeysPending!;
-                    group.KeysPending = null;
-                    ScatterKeys(group, group.KeysPendingRows, binding);
-                }
-            }
+            IAsyncInferenceBinding? pending = group.KeysPending;
+            if (pending == null || !BatchPump.IsOver(pending, group.KeysRequests, group.KeysPendingRows, out bool finished)) return;
+            group.KeysPending = null;
+            if (finished) ScatterKeys(group, group.KeysPendingRows, pending);
         }
 
         private int RunKeys(BatchBuffers group, int budget, bool first)
