@@ -76,6 +76,37 @@ namespace DeltaInterpolator.Core.Retargeting
         /// <exception cref="JointMapException">One or more bones point too far away.</exception>
         public static void RequireTPose(SkeletonMap map, ReferencePose declared, double maxDegrees, string sourceName, IReadOnlyList<string>? only = null)
         {
+            List<string> off = OffBones(map, declared, maxDegrees, only);
+            if (off.Count == 0) return;
+            if (only != null)
+            {
+                throw new JointMapException(sourceName ?? "<source>",
+                    $"in the reference pose {off.Count} spine, neck or leg bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's standing pose: {string.Join(", ", off)}",
+                    "expected a standing humanoid (legs down, spine and neck up); a rig that is not humanoid cannot be mapped, a wrong bone in the joint map is fixed with --map, a reference pose that does not stand is replaced with --reference-frame naming a standing frame (or --up for a file lying along Z), and a reference pose meant as it is is kept with " + AcceptOption + " (reported in every output)");
+            }
+
+            throw new JointMapException(sourceName ?? "<source>",
+                $"in the reference pose {off.Count} bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's T-pose: {string.Join(", ", off)}",
+                "expected a T-pose reference (legs straight down, arms straight out sideways, spine and head up); choose the avatar's T-pose, a bind pose in T-pose or a T-pose frame of a clip");
+        }
+
+        /// <summary>The CLI's explicit override of the humanoid rule (named in the refusal and in what an accepted pose reports).</summary>
+        public const string AcceptOption = "--accept-reference-pose";
+
+        /// <summary>
+        /// What <see cref="RequireTPose"/> would refuse, as one clause for every output of a run that accepted the
+        /// reference pose anyway (<see cref="AcceptOption"/>), or null when nothing is off.
+        /// </summary>
+        public static string? AcceptedDeviation(SkeletonMap map, ReferencePose declared, double maxDegrees, IReadOnlyList<string>? only = null)
+        {
+            if (!(maxDegrees > 0) || double.IsInfinity(maxDegrees)) throw new ArgumentOutOfRangeException(nameof(maxDegrees), maxDegrees, "expected a positive number of degrees");
+            List<string> off = OffBones(map, declared, maxDegrees, only);
+            if (off.Count == 0) return null;
+            return $"reference pose accepted by {AcceptOption} although {off.Count} bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's {(only != null ? "standing pose" : "T-pose")}: {string.Join(", ", off)}";
+        }
+
+        private static List<string> OffBones(SkeletonMap map, ReferencePose declared, double maxDegrees, IReadOnlyList<string>? only)
+        {
             if (!(maxDegrees > 0) || double.IsInfinity(maxDegrees)) throw new ArgumentOutOfRangeException(nameof(maxDegrees), maxDegrees, "expected a positive number of degrees");
             double[] deviation = Deviations(map, declared);
             var off = new List<string>();
@@ -88,17 +119,7 @@ namespace DeltaInterpolator.Core.Retargeting
                 off.Add(string.Format(CultureInfo.InvariantCulture, "{0} ({1}) {2:0}°", source, map.Target.Names[j], degrees));
             }
 
-            if (off.Count == 0) return;
-            if (only != null)
-            {
-                throw new JointMapException(sourceName ?? "<source>",
-                    $"in the reference pose {off.Count} spine, neck or leg bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's standing pose: {string.Join(", ", off)}",
-                    "expected a standing humanoid (legs down, spine and neck up); a rig that is not humanoid cannot be mapped, a wrong bone in the joint map is fixed with --map, and a reference pose that does not stand is replaced with --reference-frame naming a standing frame (or --up for a file lying along Z)");
-            }
-
-            throw new JointMapException(sourceName ?? "<source>",
-                $"in the reference pose {off.Count} bone(s) point more than {maxDegrees.ToString("0.#", CultureInfo.InvariantCulture)}° from the model's T-pose: {string.Join(", ", off)}",
-                "expected a T-pose reference (legs straight down, arms straight out sideways, spine and head up); choose the avatar's T-pose, a bind pose in T-pose or a T-pose frame of a clip");
+            return off;
         }
 
         private static bool Contains(IReadOnlyList<string> names, string name)

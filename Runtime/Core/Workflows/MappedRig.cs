@@ -31,8 +31,9 @@ namespace DeltaInterpolator.Core.Workflows
         private readonly double _inputFrameTime;
         private readonly string _inputPath;
 
-        private MappedRig(SkeletonMap map, double modelFrameTime, double inputFrameTime, string inputPath, string reference)
+        private MappedRig(SkeletonMap map, double modelFrameTime, double inputFrameTime, string inputPath, string reference, string? acceptedReference = null)
         {
+            AcceptedReference = acceptedReference;
             _map = map;
             _inputFrameTime = inputFrameTime;
             _modelFrameTime = modelFrameTime;
@@ -46,6 +47,9 @@ namespace DeltaInterpolator.Core.Workflows
 
         /// <inheritdoc />
         public string Description { get; }
+
+        /// <summary>What the humanoid rule would have refused in a reference pose kept with --accept-reference-pose (also in <see cref="Description"/>), or null.</summary>
+        public string? AcceptedReference { get; }
 
         /// <summary>The map between the input's skeleton and the model's.</summary>
         public SkeletonMap Map => _map;
@@ -78,17 +82,20 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="jointMap">A user joint map, or null for the best built-in one.</param>
         /// <exception cref="JointMapException">Joints missing.</exception>
         /// <param name="up">The file's up axis (auto: detected; see <see cref="UpAxisDecision"/>).</param>
+        /// <param name="acceptReferencePose">Keep a reference pose the humanoid rule refuses (the CLI's --accept-reference-pose); what it would have refused is then part of <see cref="Description"/>.</param>
         /// <exception cref="MotionRequestException">The reference frame is not a frame of the clip.</exception>
-        public static MappedRig Create(ModelContract contract, MotionClip input, int? referenceFrame, string inputPath, JointMap? jointMap = null, UpAxis up = UpAxis.Auto)
+        public static MappedRig Create(ModelContract contract, MotionClip input, int? referenceFrame, string inputPath, JointMap? jointMap = null, UpAxis up = UpAxis.Auto, bool acceptReferencePose = false)
         {
             ReferencePose source = MotionRetargeting.Reference(input, referenceFrame, "reference frame", inputPath);
             jointMap ??= JointMap.Detect(input.Skeleton, contract.Skeleton);
             UpAxisDecision decided = UpAxisDecision.Decide(up, source, referenceFrame != null, input, jointMap);
             SkeletonMap map = SkeletonMap.Create(source, ReferencePose.ModelTPose(contract.Skeleton), jointMap, inputPath, null, decided);
             // The one humanoid rule of the component (BoneDirections), without the arms: a file's reference pose is not declared a T-pose.
-            BoneDirections.RequireTPose(map, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, inputPath, BoneDirections.UprightBones);
+            string? accepted = null;
+            if (acceptReferencePose) accepted = BoneDirections.AcceptedDeviation(map, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, BoneDirections.UprightBones);
+            else BoneDirections.RequireTPose(map, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, inputPath, BoneDirections.UprightBones);
             return new MappedRig(map, 1.0 / contract.FramesPerSecond, input.FrameTime, inputPath,
-                referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture));
+                (referenceFrame == null ? "the input's default pose" : "input frame " + referenceFrame.Value.ToString(CultureInfo.InvariantCulture)) + (accepted == null ? "" : ", " + accepted), accepted);
         }
 
         /// <inheritdoc />

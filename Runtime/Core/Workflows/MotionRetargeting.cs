@@ -20,12 +20,12 @@ namespace DeltaInterpolator.Core.Workflows
         /// <exception cref="MotionRequestException">A frame of the request is not a frame of the clip.</exception>
         public static RetargetResult ToModel(MotionClip source, string sourceName, ModelContract contract, RetargetRequest request)
         {
-            SkeletonMap toModel = MapToModel(source, sourceName, contract, request);
+            SkeletonMap toModel = MapToModel(source, sourceName, contract, request, out string? accepted);
             MotionClip onModel = toModel.ToTarget(Trim(source, request, sourceName));
             UpAxisDetection.RequireStanding(onModel, sourceName, toModel.Up!.Description);
             double frameTime = 1.0 / (request.OutputFps ?? contract.FramesPerSecond);
             MotionClip resampled = Math.Abs(frameTime - onModel.FrameTime) > 1e-4 * frameTime ? MotionResampler.Resample(onModel, frameTime, sourceName) : onModel;
-            return new RetargetResult(resampled, toModel, null);
+            return new RetargetResult(resampled, toModel, null, accepted);
         }
 
         /// <summary>
@@ -36,29 +36,38 @@ namespace DeltaInterpolator.Core.Workflows
         /// <exception cref="MotionRequestException">A frame of the request is not a frame of its clip.</exception>
         public static RetargetResult ToRig(MotionClip source, string sourceName, MotionClip target, string targetName, ModelContract contract, RetargetRequest request)
         {
-            SkeletonMap toModel = MapToModel(source, sourceName, contract, request);
+            SkeletonMap toModel = MapToModel(source, sourceName, contract, request, out string? accepted);
             MotionClip onModel = toModel.ToTarget(Trim(source, request, sourceName));
             UpAxisDetection.RequireStanding(onModel, sourceName, toModel.Up!.Description);
             ReferencePose targetReference = Reference(target, request.TargetReferenceFrame, "target reference frame", targetName);
             JointMap targetMap = request.Map ?? JointMap.Detect(target.Skeleton, contract.Skeleton);
             UpAxisDecision targetUp = UpAxisDecision.Decide(request.Up, targetReference, request.TargetReferenceFrame != null, target, targetMap);
             SkeletonMap fromModel = SkeletonMap.Create(targetReference, ReferencePose.ModelTPose(contract.Skeleton), targetMap, targetName, null, targetUp);
-            BoneDirections.RequireTPose(fromModel, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, targetName, BoneDirections.UprightBones);
+            string? targetAccepted = Humanoid(fromModel, contract, targetName, request.AcceptReferencePose);
+            if (targetAccepted != null) accepted = (accepted == null ? "" : "source " + accepted + "; ") + "target " + targetAccepted;
             MotionClip onTarget = fromModel.ToSource(onModel, OneFrame(target.Skeleton, targetReference, source.FrameTime));
             if (request.InputFps.HasValue && !request.OutputFps.HasValue) onTarget = MotionResampler.Resample(onTarget, source.FrameTime, sourceName);
             if (request.OutputFps.HasValue) onTarget = MotionResampler.Resample(onTarget, 1.0 / request.OutputFps.Value, sourceName);
-            return new RetargetResult(onTarget, toModel, fromModel);
+            return new RetargetResult(onTarget, toModel, fromModel, accepted);
         }
 
-        private static SkeletonMap MapToModel(MotionClip source, string sourceName, ModelContract contract, RetargetRequest request)
+        private static SkeletonMap MapToModel(MotionClip source, string sourceName, ModelContract contract, RetargetRequest request, out string? accepted)
         {
             ReferencePose reference = Reference(source, request.ReferenceFrame, "reference frame", sourceName);
             JointMap map = request.Map ?? JointMap.Detect(source.Skeleton, contract.Skeleton);
             UpAxisDecision up = UpAxisDecision.Decide(request.Up, reference, request.ReferenceFrame != null, source, map);
             SkeletonMap toModel = SkeletonMap.Create(reference, ReferencePose.ModelTPose(contract.Skeleton), map, sourceName, request.Scale, up);
             // The one humanoid rule of the component (BoneDirections), without the arms: a file's reference pose is not declared a T-pose.
-            BoneDirections.RequireTPose(toModel, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, sourceName, BoneDirections.UprightBones);
+            accepted = Humanoid(toModel, contract, sourceName, request.AcceptReferencePose);
             return toModel;
+        }
+
+        /// <summary>Refuses a map whose reference pose fails the humanoid rule, or with <paramref name="accept"/> returns what it would have refused (null: nothing).</summary>
+        private static string? Humanoid(SkeletonMap map, ModelContract contract, string name, bool accept)
+        {
+            if (accept) return BoneDirections.AcceptedDeviation(map, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, BoneDirections.UprightBones);
+            BoneDirections.RequireTPose(map, ReferencePose.ModelTPose(contract.Skeleton), BoneDirections.DefaultMaxDegrees, name, BoneDirections.UprightBones);
+            return null;
         }
 
         /// <summary>The source's frames from <see cref="RetargetRequest.FromFrame"/> on, at its true frame rate.</summary>

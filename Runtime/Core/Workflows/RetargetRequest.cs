@@ -28,5 +28,11 @@ namespace DeltaInterpolator.Core.Workflows
 
         /// <summary>For a target rig: its frame that is its reference pose, or null for its default pose.</summary>
         public int? TargetReferenceFrame { get; set; }
+
+        /// <summary>
+        /// Keep reference poses the humanoid rule (<see cref="Retargeting.BoneDirections.UprightBones"/> within 25°) refuses:
+        /// the CLI's --accept-reference-pose. What was accepted is in <see cref="RetargetResult.AcceptedReference"/>.
+        /// </summary>
+        public bool AcceptReferencePose { get; set; }
     }
 }

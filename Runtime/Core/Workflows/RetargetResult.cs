@@ -6,8 +6,9 @@ namespace DeltaInterpolator.Core.Workflows
     /// <summary>The motion <see cref="MotionRetargeting"/> produced and the maps it went through.</summary>
     public sealed class RetargetResult
     {
-        internal RetargetResult(MotionClip motion, SkeletonMap toModel, SkeletonMap? fromModel)
+        internal RetargetResult(MotionClip motion, SkeletonMap toModel, SkeletonMap? fromModel, string? acceptedReference = null)
         {
+            AcceptedReference = acceptedReference;
             Motion = motion;
             ToModel = toModel;
             FromModel = fromModel;
@@ -21,5 +22,11 @@ namespace DeltaInterpolator.Core.Workflows
 
         /// <summary>The target rig ↔ the model's skeleton, or null when the target is the model.</summary>
         public SkeletonMap? FromModel { get; }
+
+        /// <summary>
+        /// With <see cref="RetargetRequest.AcceptReferencePose"/>: the reference pose(s) the humanoid rule would have
+        /// refused (bones and angles), for every output of the run to report; null when nothing was accepted.
+        /// </summary>
+        public string? AcceptedReference { get; }
     }
 }

@@ -20,7 +20,8 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="up">The file's up axis (auto: detected; a Z-up file on the model's skeleton goes through a map).</param>
         /// <exception cref="JointMapException">The rig cannot be mapped (joints missing).</exception>
         /// <exception cref="MotionRequestException">The reference frame is not a frame of the clip.</exception>
-        public static IRigRetargeting For(ModelContract contract, MotionClip clip, string source, int? referenceFrame = null, JointMap? map = null, UpAxis up = UpAxis.Auto)
+        /// <param name="acceptReferencePose">Keep a reference pose the humanoid rule refuses, reported in <see cref="IRigRetargeting.Description"/> (<see cref="MappedRig.Create"/>).</param>
+        public static IRigRetargeting For(ModelContract contract, MotionClip clip, string source, int? referenceFrame = null, JointMap? map = null, UpAxis up = UpAxis.Auto, bool acceptReferencePose = false)
         {
             var report = new ModelCheckReport();
             ModelChecks.Skeleton(contract, clip.Skeleton, source, report);
@@ -30,7 +31,7 @@ namespace DeltaInterpolator.Core.Workflows
                 return new SameRig(contract, clip, source);
             }
 
-            return MappedRig.Create(contract, clip, referenceFrame, source, map, up);
+            return MappedRig.Create(contract, clip, referenceFrame, source, map, up, acceptReferencePose);
         }
     }
 }

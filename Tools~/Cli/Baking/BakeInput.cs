@@ -76,11 +76,11 @@ namespace DeltaInterpolator.Cli.Baking
         /// </summary>
         /// <exception cref="CliErrors.UsageException">The keys or the rig do not work; the message names <paramref name="input"/>.</exception>
         public static BakeRun Bake(BvhAnimation animation, string input, int[] keys, ModelContract contract, IReadOnlyList<BakeMethod> methods,
-            int? referenceFrame, JointMap? map, bool quiet = false, UpAxis up = UpAxis.Auto)
+            int? referenceFrame, JointMap? map, bool quiet = false, UpAxis up = UpAxis.Auto, bool acceptReferencePose = false)
         {
             try
             {
-                IRigRetargeting rig = RigRetargeting.For(contract, animation.Motion, input, referenceFrame, map, up);
+                IRigRetargeting rig = RigRetargeting.For(contract, animation.Motion, input, referenceFrame, map, up, acceptReferencePose);
                 if (quiet) return InbetweenBake.Run(animation.Motion, keys, rig, methods);
                 BakeRun? run = null;
                 IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings

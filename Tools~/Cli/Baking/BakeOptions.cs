@@ -77,6 +77,8 @@ namespace DeltaInterpolator.Cli.Baking
 
         public readonly Option<string> _up = UpAxisArgument.Create();
 
+        public readonly Option<bool> _acceptReferencePose = ReferencePoseArgument.Create();
+
         public readonly Option<string?> _map = new Option<string?>("--map")
         {
             Description = "A JSON joint map {\"ModelJoint\": \"sourceJoint\" or [\"chain\"] or null, …} for names the built-in maps miss (the format 'retarget --map' reads; null or omitted: a joint the rig lacks, synthesized).",
@@ -141,7 +143,7 @@ namespace DeltaInterpolator.Cli.Baking
             command.Arguments.Add(_input);
             foreach (Option o in new Option[] { _keys, _every, _method, _model, _pastPolicy, _context, _out }) command.Options.Add(o);
             _output.AddTo(command);
-            foreach (Option o in new Option[] { _referenceFrame, _up, _map, _inputFps, _fromFrame, _feet, _json, _preview, _png, _stats, _threads }) command.Options.Add(o);
+            foreach (Option o in new Option[] { _referenceFrame, _up, _acceptReferencePose, _map, _inputFps, _fromFrame, _feet, _json, _preview, _png, _stats, _threads }) command.Options.Add(o);
         }
 
         /// <summary>The request, every value checked and every output checked writable and distinct from the inputs and each other.</summary>
@@ -159,6 +161,7 @@ namespace DeltaInterpolator.Cli.Baking
                 Feet = BakeFeet.Parse(parse.GetValue(_feet)!),
                 ReferenceFrame = parse.GetValue(_referenceFrame),
                 Up = UpAxisArgument.Parse(parse.GetValue(_up), "bake"),
+                AcceptReferencePose = parse.GetValue(_acceptReferencePose),
             };
             string? keysText = parse.GetValue(_keys);
             if ((keysText == null) == (r.Every == null))

@@ -19,6 +19,8 @@ namespace DeltaInterpolator.Cli.Baking
         public bool Force { get; set; }
         public int? ReferenceFrame { get; set; }
         public Core.Retargeting.UpAxis Up { get; set; }
+        /// <summary>--accept-reference-pose: keep a reference pose the humanoid rule refuses (then named in the rig's description: console and JSON).</summary>
+        public bool AcceptReferencePose { get; set; }
         public string? MapPath { get; set; }
         public double? InputFps { get; set; }
         public int FromFrame { get; set; }

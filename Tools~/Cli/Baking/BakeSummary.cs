@@ -51,6 +51,7 @@ namespace DeltaInterpolator.Cli.Baking
                 settings.FilledFramesAsContext ? "keys and filled frames" : "key frames only")));
             string? keyLine = BakeInput.KeyLine(run.Rig);
             if (keyLine != null) AnsiConsole.MarkupLine(Markup.Escape(keyLine));
+            if (run.Rig is Core.Workflows.MappedRig { AcceptedReference: { } accepted }) AnsiConsole.MarkupLine(Markup.Escape($"warning: {request.Input}: {accepted}"));
             if (statistics != null) AnsiConsole.MarkupLine(Markup.Escape($"L2P: per-coordinate std of {statistics.Source}, frames where they are in the file (no window normalisation); L2Q: global quaternions, each in the truth's hemisphere"));
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "wrote {0} ({1}); read {2:0.000} s, model load {3:0.000} s, total {4:0.00} s",

@@ -12,7 +12,8 @@ namespace DeltaInterpolator.Cli.Scoring
     /// field for field): <c>inbetween-data.json</c> inside the folder, or a <c>NAME.json</c> whose
     /// <c>"folder"</c> names the folder relative to it; <c>defaults</c> and <c>files</c> (globs on the path
     /// relative to the folder, later matches win) with <c>from_frame</c>, <c>reference_frame</c>, <c>fps</c>,
-    /// <c>map</c>, <c>skip</c> and <c>up</c> (the file's up axis: "auto", "y" or "z", as <c>--up</c>); <c>groups</c>, a regex whose group 1 names a file's subject. Both readers
+    /// <c>map</c>, <c>skip</c>, <c>up</c> (the file's up axis: "auto", "y" or "z", as <c>--up</c>) and
+    /// <c>accept_reference_pose</c> (true: as <c>--accept-reference-pose</c> for that file); <c>groups</c>, a regex whose group 1 names a file's subject. Both readers
     /// refuse the same values with the same messages; <c>Tests/Fixtures~/manifests</c> holds fixtures that both
     /// test suites read to the same files, settings and refusals (<c>ManifestFixtureTests</c>, <c>test_manifest_fixtures.py</c>).
     /// </summary>
@@ -20,7 +21,7 @@ namespace DeltaInterpolator.Cli.Scoring
     {
         public const string FileName = "inbetween-data.json";
         private const long MaxBytes = 1 << 20;
-        private static readonly HashSet<string> FileFields = new HashSet<string>(StringComparer.Ordinal) { "from_frame", "reference_frame", "fps", "map", "skip", "up" };
+        private static readonly HashSet<string> FileFields = new HashSet<string>(StringComparer.Ordinal) { "from_frame", "reference_frame", "fps", "map", "skip", "up", "accept_reference_pose" };
         private static readonly HashSet<string> TopFields = new HashSet<string>(StringComparer.Ordinal) { "folder", "licence", "defaults", "files", "groups", "comment" };
 
         private readonly List<KeyValuePair<string, Dictionary<string, JsonElement>>> _files = new List<KeyValuePair<string, Dictionary<string, JsonElement>>>();
@@ -46,8 +47,9 @@ namespace DeltaInterpolator.Cli.Scoring
         /// <summary>One file's facts.</summary>
         public sealed class Entry
         {
-            public Entry(string path, string name, string group, int fromFrame, int? referenceFrame, double? fps, string? map, Core.Retargeting.UpAxis? up = null)
+            public Entry(string path, string name, string group, int fromFrame, int? referenceFrame, double? fps, string? map, Core.Retargeting.UpAxis? up = null, bool acceptReferencePose = false)
             {
+                AcceptReferencePose = acceptReferencePose;
                 Up = up;
                 FilePath = path;
                 Name = name;
@@ -67,6 +69,9 @@ namespace DeltaInterpolator.Cli.Scoring
             public string? Map { get; }
             /// <summary>The manifest's "up" for the file, or null when it names none (score's --up then applies).</summary>
             public Core.Retargeting.UpAxis? Up { get; }
+
+            /// <summary>The manifest's "accept_reference_pose" for the file (score's --accept-reference-pose applies to every file as well).</summary>
+            public bool AcceptReferencePose { get; }
         }
 
         /// <summary>A folder (with its optional manifest) or a manifest naming its folder.</summary>
@@ -132,7 +137,8 @@ namespace DeltaInterpolator.Cli.Scoring
 
                 Core.Retargeting.UpAxis? up = settings.TryGetValue("up", out JsonElement u) && u.ValueKind == JsonValueKind.String
                     ? Core.Retargeting.UpAxes.Parse(u.GetString()) : null;
-                result.Add(new Entry(file, name, group, from, reference, fps, map, up));
+                bool accept = settings.TryGetValue("accept_reference_pose", out JsonElement a) && a.ValueKind == JsonValueKind.True;
+                result.Add(new Entry(file, name, group, from, reference, fps, map, up, accept));
             }
 
             return result;
@@ -210,11 +216,16 @@ namespace DeltaInterpolator.Cli.Scoring
         {
             foreach (JsonProperty p in element.EnumerateObject())
             {
-                if (!FileFields.Contains(p.Name)) throw Refusal(path, $"unknown setting {Quoted(p.Name)}", "expected from_frame, reference_frame, fps, map, skip, up");
+                if (!FileFields.Contains(p.Name)) throw Refusal(path, $"unknown setting {Quoted(p.Name)}", "expected from_frame, reference_frame, fps, map, skip, up, accept_reference_pose");
                 if (p.Name == "up" && p.Value.ValueKind != JsonValueKind.Null
                     && (p.Value.ValueKind != JsonValueKind.String || p.Value.GetString() is not ("auto" or "y" or "z")))
                 {
                     throw Refusal(path, $"\"up\": {Text(p.Value)}", "expected \"auto\", \"y\" or \"z\" (or null)");
+                }
+
+                if (p.Name == "accept_reference_pose" && p.Value.ValueKind is not (JsonValueKind.True or JsonValueKind.False or JsonValueKind.Null))
+                {
+                    throw Refusal(path, $"\"accept_reference_pose\": {Text(p.Value)}", "expected true or false (or null)");
                 }
 
                 into[p.Name] = p.Value.Clone();

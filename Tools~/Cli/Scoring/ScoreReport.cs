@@ -9,7 +9,7 @@ namespace DeltaInterpolator.Cli.Scoring
     /// <summary><c>score --json</c>: every file's values, the totals per subject and over all files, each method beside its ratio to SLERP.</summary>
     internal static class ScoreReport
     {
-        public static string Json(ScoreSheet sheet, IReadOnlyList<string> modelPaths, Core.Baking.KeySpacing every)
+        public static string Json(ScoreSheet sheet, IReadOnlyList<string> modelPaths, Core.Baking.KeySpacing every, IReadOnlyList<string>? acceptedReferencePoses = null)
         {
             int methods = sheet.Methods.Count;
             using var buffer = new MemoryStream();
@@ -55,6 +55,14 @@ namespace DeltaInterpolator.Cli.Scoring
                 w.WriteStartArray("models");
                 foreach (string p in modelPaths) w.WriteStringValue(p);
                 w.WriteEndArray();
+                // --accept-reference-pose: what each file's reference pose broke of the humanoid rule (absent when nothing).
+                if (acceptedReferencePoses != null && acceptedReferencePoses.Count > 0)
+                {
+                    w.WriteStartArray("accepted_reference_poses");
+                    foreach (string a in acceptedReferencePoses) w.WriteStringValue(a);
+                    w.WriteEndArray();
+                }
+
                 w.WriteStartArray("files");
                 foreach (ScoreRow r in sheet.Rows)
                 {

@@ -73,7 +73,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 AnsiConsole.MarkupLine(Markup.Escape($"keys {r.Every.Value.Describe(animation.Motion.FrameTime, model.Contract.FramesPerSecond)} from frame {r.FromFrame}: {keys.Length} keys"));
             }
 
-            BakeRun run = BakeInput.Bake(animation, r.Input, keys, model.Contract, BakeInput.ModelAndSlerp(model, r.Policy, r.FilledContext, r.Feet), r.ReferenceFrame, jointMap, up: r.Up);
+            BakeRun run = BakeInput.Bake(animation, r.Input, keys, model.Contract, BakeInput.ModelAndSlerp(model, r.Policy, r.FilledContext, r.Feet), r.ReferenceFrame, jointMap, up: r.Up, acceptReferencePose: r.AcceptReferencePose);
             // Before OUT.bvh, the scores or the preview: a NaN or overflow is refused, never written or drawn.
             MotionChecks.RequireFinitePositions(run["Model"].OnRig, r.Input, "the model's result");
             MotionChecks.RequireFinitePositions(run["SLERP"].OnRig, r.Input, "the SLERP result");

@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Text;
+using Spectre.Console;
 using DeltaInterpolator.Cli.Retargeting;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Inference;
@@ -57,6 +58,7 @@ namespace DeltaInterpolator.Cli.Verbs
         };
 
         private readonly Option<string> _up = UpAxisArgument.Create();
+        private readonly Option<bool> _acceptReferencePose = ReferencePoseArgument.Create();
 
         private readonly Option<int?> _targetReferenceFrame = new Option<int?>("--target-reference-frame")
         {
@@ -113,6 +115,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_map);
             command.Options.Add(_referenceFrame);
             command.Options.Add(_up);
+            command.Options.Add(_acceptReferencePose);
             command.Options.Add(_targetReferenceFrame);
             command.Options.Add(_fps);
             command.Options.Add(_inputFps);
@@ -170,6 +173,7 @@ namespace DeltaInterpolator.Cli.Verbs
             {
                 ReferenceFrame = parse.GetValue(_referenceFrame), FromFrame = fromFrame ?? 0, InputFps = inputFps, OutputFps = fps, Scale = scale,
                 Map = userMap, TargetReferenceFrame = parse.GetValue(_targetReferenceFrame), Up = up,
+                AcceptReferencePose = parse.GetValue(_acceptReferencePose),
             };
             RetargetResult retargeted;
             BvhAnimation result;
@@ -193,6 +197,7 @@ namespace DeltaInterpolator.Cli.Verbs
             });
 
             RetargetSummary.Print(input, source, retargeted.ToModel, retargeted.FromModel, request.ReferenceFrame, scale.HasValue, fromFrame, inputFps, result, output, toModel ? contract.Name : to, clock.Elapsed.TotalSeconds);
+            if (retargeted.AcceptedReference != null) AnsiConsole.MarkupLine(Markup.Escape($"warning: {input}: {retargeted.AcceptedReference}"));
             return 0;
         }
 

@@ -62,6 +62,7 @@ namespace DeltaInterpolator.Cli.Verbs
         private readonly OutputOptions _output = new OutputOptions();
 
         private readonly Option<string> _up = UpAxisArgument.Create();
+        private readonly Option<bool> _acceptReferencePose = ReferencePoseArgument.Create();
 
         /// <inheritdoc />
         public Command CreateCommand()
@@ -80,6 +81,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_json);
             _up.Description = UpAxisArgument.Help + " For files whose manifest names no \"up\".";
             command.Options.Add(_up);
+            command.Options.Add(_acceptReferencePose);
             _output.AddTo(command);
             command.SetAction(parse => CliErrors.Guard(() => Run(parse)));
             return command;
@@ -90,6 +92,8 @@ namespace DeltaInterpolator.Cli.Verbs
             string[] data = parse.GetValue(_data) ?? Array.Empty<string>();
             KeySpacing every = EveryArgument.Parse(parse.GetValue(_every), "score")!.Value;
             Core.Retargeting.UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "score");
+            bool acceptReferencePose = parse.GetValue(_acceptReferencePose);
+            var accepted = new List<string>();
             var models = new List<string>(parse.GetValue(_models) ?? Array.Empty<string>());
             if (models.Count == 0) models.Add(ShippedModels.Find(ShippedModels.Default));
             foreach (string m in models) Core.IO.InputFile.Check(m, "an exported model (NAME.onnx)");
@@ -142,14 +146,15 @@ namespace DeltaInterpolator.Cli.Verbs
                     var task = ctx.AddTask("Baking files", maxValue: entries.Count);
                     foreach (DataManifest.Entry e in entries)
                     {
-                        sheet.Add(ScoreFile(e, every, inbetweeners, up));
+                        sheet.Add(ScoreFile(e, every, inbetweeners, up, acceptReferencePose, accepted));
                         task.Increment(1);
                     }
                 });
                 ScoreTable.Print(sheet, every);
+                foreach (string line in accepted) AnsiConsole.MarkupLine(Markup.Escape("warning: " + line));
                 if (jsonFull != null)
                 {
-                    string json = ScoreReport.Json(sheet, models, every);
+                    string json = ScoreReport.Json(sheet, models, every, accepted);
                     OutputFile.Write(jsonFull, stream =>
                     {
                         using var writer = new StreamWriter(stream, new UTF8Encoding(false), 1 << 16, leaveOpen: true);
@@ -167,7 +172,7 @@ namespace DeltaInterpolator.Cli.Verbs
         }
 
         /// <summary>One file baked with every model (and SLERP once, with the first model's keys) and scored per leg length.</summary>
-        private static ScoreRow ScoreFile(DataManifest.Entry e, KeySpacing every, List<Inbetweener> models, Core.Retargeting.UpAxis up)
+        private static ScoreRow ScoreFile(DataManifest.Entry e, KeySpacing every, List<Inbetweener> models, Core.Retargeting.UpAxis up, bool acceptReferencePose, List<string> accepted)
         {
             BvhAnimation animation = BakeInput.WithFrameRate(BvhReader.Read(e.FilePath), e.Fps);
             var position = new double[models.Count + 1];
@@ -181,7 +186,8 @@ namespace DeltaInterpolator.Cli.Verbs
                 JointMap? map = BakeInput.LoadMap(e.Map, animation, models[i].Contract);
                 int[] keys = BakeInput.Every(every, animation.Motion, e.FromFrame, models[i].Contract, e.FilePath);
                 BakeMethod[] methods = i == 0 ? BakeInput.ModelAndSlerp(models[i], null, true, null) : new[] { BakeMethod.Model(models[i]) };
-                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up);
+                BakeRun run = BakeInput.Bake(animation, e.FilePath, keys, models[i].Contract, methods, e.ReferenceFrame, map, quiet: true, up: e.Up ?? up, acceptReferencePose: acceptReferencePose || e.AcceptReferencePose);
+                if (i == 0 && run.Rig is MappedRig mapped && mapped.AcceptedReference != null) accepted.Add($"{e.FilePath}: {mapped.AcceptedReference}");
                 BakeScores scores = BakeScores.Measure(animation.Motion, run);
                 leg = scores.LegLength;
                 frames = scores["Model"].Accuracy.Frames;

@@ -20,7 +20,9 @@ to the manifest). Its fields (all optional):
 scored, never trained on); `reference_frame` is the frame (0-based, may be a dropped one) whose pose is the
 skeleton's reference (null: its default pose, see `inbetween retarget --help`); `fps` overrides a wrong
 header; `map` is a JSON joint map (path relative to the manifest) for names the built-in maps miss; `up`
-is the file's up axis ("auto", "y" or "z"; null: auto, as `inbetween retarget --up`); `skip` leaves a file out. `files` keys are globs on the path relative to the folder; later matches override
+is the file's up axis ("auto", "y" or "z"; null: auto, as `inbetween retarget --up`); `accept_reference_pose`
+(true/false) keeps a reference pose the 25° humanoid rule refuses (`inbetween retarget --accept-reference-pose`,
+which reports the bones it accepted); `skip` leaves a file out. `files` keys are globs on the path relative to the folder; later matches override
 earlier ones, options on the command line override the defaults.
 """
 from __future__ import annotations
@@ -50,7 +52,7 @@ from .safe_input import check_regular
 from .terminal_text import NAME_LENGTH, safe
 
 MANIFEST_NAME = "inbetween-data.json"
-FILE_FIELD_ORDER = ("from_frame", "reference_frame", "fps", "map", "skip", "up")
+FILE_FIELD_ORDER = ("from_frame", "reference_frame", "fps", "map", "skip", "up", "accept_reference_pose")
 FILE_FIELDS = set(FILE_FIELD_ORDER)
 UP_AXES = ("auto", "y", "z")  # `inbetween --up` and score's manifest reader take the same values
 REPO_ROOT = Path(__file__).resolve().parents[3]  # Training/Python~/deltainterp/datasets.py
@@ -69,6 +71,7 @@ class FilePlan:
     time_scale: float = 1.0     # > 1: played slower (more frames), < 1: faster; 1 = as captured
     group: str = ""
     up: Optional[str] = None    # the file's up axis for `retarget --up` (auto, y, z); None: the tool's default (auto)
+    accept_reference_pose: bool = False  # `retarget --accept-reference-pose`: the manifest's explicit override of the humanoid rule
 
 
 @dataclass
@@ -187,6 +190,9 @@ def _check_settings(path: Path, settings: Dict) -> None:
         raise _fail(path, f"\"map\": {_json_text(settings['map'])}", "expected a path to a JSON joint map (or null)")
     if "skip" in settings and not isinstance(settings["skip"], bool):
         raise _fail(path, f"\"skip\": {_json_text(settings['skip'])}", "expected true or false")
+    v = settings.get("accept_reference_pose")
+    if v is not None and not isinstance(v, bool):
+        raise _fail(path, f"\"accept_reference_pose\": {_json_text(v)}", "expected true or false (or null)")
     v = settings.get("up")
     if v is not None and v not in UP_AXES:
         raise _fail(path, f"\"up\": {_json_text(v)}", "expected \"auto\", \"y\" or \"z\" (or null)")
@@ -317,7 +323,8 @@ def plan_files(source: DataSource, options: Dict, holdout: Sequence[str], time_s
         for scale in [1.0] + [s for s in time_scales if s != 1.0]:
             plans.append(FilePlan(path, name, str(source.folder), int(settings.get("from_frame") or 0),
                                   settings.get("reference_frame"), settings.get("fps"), map_path, scale,
-                                  up=settings.get("up")))
+                                  up=settings.get("up"),
+                                  accept_reference_pose=settings.get("accept_reference_pose") is True))
     if source.groups and plans:
         names = sorted({p.name for p in plans})
         groups = dict(zip(names, subject_groups(source.groups, names, str(source.manifest or source.folder))))
@@ -404,6 +411,8 @@ def _retarget_args(plan: FilePlan, out: Path, model: Optional[str]) -> List[str]
         args += ["--map", _as_argument(plan.map)]
     if plan.up is not None:
         args += ["--up", plan.up]
+    if plan.accept_reference_pose:
+        args.append("--accept-reference-pose")
     if model:
         args += ["--model", _as_argument(model)]
     # A time scale s plays the motion s times as long: the file is read as if captured at fps / s.

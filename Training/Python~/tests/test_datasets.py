@@ -56,6 +56,16 @@ def test_up_reaches_retarget_per_file_and_from_the_command_line(tmp_path):
     assert "--up" not in _retarget_args(plan_files(open_source(str(bare)), {}, [], [])[0], tmp_path / "o.bvh", None)
 
 
+def test_accept_reference_pose_reaches_retarget_per_file(tmp_path):
+    """Issue 30: the manifest's "accept_reference_pose" (as score's reader) becomes `retarget --accept-reference-pose` for that file only."""
+    from deltainterp.datasets import _retarget_args
+    data = _folder(tmp_path, {"files": {"60_*": {"accept_reference_pose": True}}})
+    plans = {p.name: p for p in plan_files(open_source(str(data)), {}, [], [])}
+    assert plans["60_01.bvh"].accept_reference_pose and not plans["01_01.bvh"].accept_reference_pose
+    assert "--accept-reference-pose" in _retarget_args(plans["60_01.bvh"], tmp_path / "o.bvh", None)
+    assert "--accept-reference-pose" not in _retarget_args(plans["01_01.bvh"], tmp_path / "o.bvh", None)
+
+
 def test_prepare_refuses_a_hostile_up_in_one_line(tmp_path, capsys):
     data = _folder(tmp_path)
     code = main(["prepare", "--data", str(data), "--up", "x\x1b[2J", "--out", str(tmp_path / "o.npz")])
@@ -84,6 +94,8 @@ def test_a_manifest_file_names_its_folder_relative_to_itself(tmp_path):
     ({"defaults": {"up": "x"}}, "\"up\""),
     ({"files": {"a*": {"up": "Z; rm -rf /"}}}, "\"up\""),
     ({"defaults": {"up": 1}}, "\"up\""),
+    ({"defaults": {"accept_reference_pose": "yes"}}, "\"accept_reference_pose\""),
+    ({"files": {"a*": {"accept_reference_pose": 1}}}, "\"accept_reference_pose\""),
 ])
 def test_bad_manifests_are_refused_naming_the_file(tmp_path, manifest, phrase):
     data = _folder(tmp_path, manifest)

@@ -5,7 +5,7 @@ Made from the real skeleton, not drawn by hand: the bone offsets of the shipped 
 joint's local X axis, along which LaFAN1's bones run, turned to the T-pose direction given there, its
 local Z towards the hint given there). From the repository root:
 
-    ./Tools~/inbetween retarget Samples~/Demo/cmu_01_01_jumps_turn.bvh --to model --reference-frame 0 \
+    ./Tools~/inbetween retarget Samples~/Demo/cmu_01_01_jumps_turn.bvh --to model --reference-frame 0 --accept-reference-pose \
         --out /tmp/model-tpose.bvh --force
     PYTHONPATH=Training/Python~ /usr/bin/python3 \
         Training/Python~/tools/model_skeleton_figure.py /tmp/model-tpose.bvh Documentation~/images/model-skeleton.png
