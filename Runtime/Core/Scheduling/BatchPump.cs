@@ -175,6 +175,63 @@ namespace DeltaInterpolator.Core.Scheduling
         }
 
         /// <summary>
+        /// Counts a bound run of <paramref name="rows"/> requests (<paramref name="tokens"/>) and runs it here, or schedules
+        /// it where the pump is asynchronous and the binding can be (its requests are then in flight). A failure to run or
+        /// schedule ends the run's requests with it. Key runs and frame runs launch alike; only their outputs differ.
+        /// </summary>
+        /// <returns>True when it ran here: the caller scatters its outputs. False when it was scheduled (<paramref name="pending"/>) or failed.</returns>
+        internal bool RunOrSchedule(IInferenceBinding binding, TransitionRequest?[] requests, int rows, int tokens, out IAsyncInferenceBinding? pending)
+        {
+            pending = null;
+            Count(rows, tokens);
+            if (Async && binding is IAsyncInferenceBinding scheduled)
+            {
+                for (int r = 0; r < rows; r++) requests[r]!.InFlight = true;
+                try
+                {
+                    scheduled.Schedule();
+                }
+                catch (Exception e)
+                {
+                    Fail(requests, rows, e);
+                    return false;
+                }
+
+                pending = scheduled;
+                return false;
+            }
+
+            try
+            {
+                binding.Run();
+            }
+            catch (Exception e)
+            {
+                Fail(requests, rows, e);
+                return false;
+            }
+
+            return true;
+        }
+
+        /// <summary>Whether a scheduled run is over; one that failed ends its first <paramref name="rows"/> requests with the error.</summary>
+        /// <returns>True when it finished or failed (it is no longer pending); <paramref name="finished"/>: it finished, so its outputs can be scattered.</returns>
+        internal static bool IsOver(IAsyncInferenceBinding pending, TransitionRequest?[] requests, int rows, out bool finished)
+        {
+            try
+            {
+                finished = pending.TryComplete();
+                return finished;
+            }
+            catch (Exception e)
+            {
+                Fail(requests, rows, e);
+                finished = false;
+                return true;
+            }
+        }
+
+        /// <summary>
         /// Decodes row <paramref name="r"/> of a frame run (its <see cref="FramesPerRun"/> output rows) into the request's
         /// frames from <paramref name="from"/> on (those within its gap) and publishes each.
         /// </summary>

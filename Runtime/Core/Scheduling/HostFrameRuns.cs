@@ -119,36 +119,16 @@ namespace DeltaInterpolator.Core.Scheduling
                 return 0;
             }
 
-            Pump.Count(rows, rows * per);
-            if (Pump.Async && binding is IAsyncInferenceBinding scheduled)
+            if (Pump.RunOrSchedule(binding, group.FrameRequests, rows, rows * per, out IAsyncInferenceBinding? pending))
             {
-                for (int r = 0; r < rows; r++) group.FrameRequests[r]!.InFlight = true;
-                try
-                {
-                    scheduled.Schedule();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.FrameRequests, rows, e);
-                    return rows * per;
-                }
-
-                group.FramePending = scheduled;
+                ScatterFrames(group, rows);
+            }
+            else if (pending != null)
+            {
+                group.FramePending = pending;
                 group.FramePendingRows = rows;
-                return rows * per;
             }
 
-            try
-            {
-                binding.Run();
-            }
-            catch (Exception e)
-            {
-                BatchPump.Fail(group.FrameRequests, rows, e);
-                return rows * per;
-            }
-
-            ScatterFrames(group, rows);
             return rows * per;
         }
 
@@ -166,26 +146,10 @@ namespace DeltaInterpolator.Core.Scheduling
 
         private void CollectFrames(BatchBuffers group)
         {
-            if (group.FramePending != null)
-            {
-                bool done;
-                try
-                {
-                    done = group.FramePending.TryComplete();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.FrameRequests, group.FramePendingRows, e);
-                    group.FramePending = null;
-                    done = false;
-                }
-
-                if (done)
-                {
-                    group.FramePending = null;
-                    ScatterFrames(group, group.FramePendingRows);
-                }
-            }
+            IAsyncInferenceBinding? pending = group.FramePending;
+            if (pending == null || !BatchPump.IsOver(pending, group.FrameRequests, group.FramePendingRows, out bool finished)) return;
+            group.FramePending = null;
+            if (finished) ScatterFrames(group, group.FramePendingRows);
         }
     }
 }

@@ -53,27 +53,10 @@ namespace DeltaInterpolator.Core.Scheduling
 
         protected void CollectKeys(BatchBuffers group)
         {
-            if (group.KeysPending != null)
-            {
-                bool done;
-                try
-                {
-                    done = group.KeysPending.TryComplete();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.KeysRequests, group.KeysPendingRows, e);
-                    group.KeysPending = null;
-                    done = false;
-                }
-
-                if (done)
-                {
-                    IAsyncInferenceBinding binding = group.KeysPending!;
-                    group.KeysPending = null;
-                    ScatterKeys(group, group.KeysPendingRows, binding);
-                }
-            }
+            IAsyncInferenceBinding? pending = group.KeysPending;
+            if (pending == null || !BatchPump.IsOver(pending, group.KeysRequests, group.KeysPendingRows, out bool finished)) return;
+            group.KeysPending = null;
+            if (finished) ScatterKeys(group, group.KeysPendingRows, pending);
         }
 
         private int RunKeys(BatchBuffers group, int budget, bool first)
@@ -103,36 +86,16 @@ namespace DeltaInterpolator.Core.Scheduling
                 return 0;
             }
 
-            Pump.Count(rows, rows * k);
-            if (Pump.Async && binding is IAsyncInferenceBinding scheduled)
+            if (Pump.RunOrSchedule(binding, group.KeysRequests, rows, rows * k, out IAsyncInferenceBinding? pending))
             {
-                for (int r = 0; r < rows; r++) group.KeysRequests[r]!.InFlight = true;
-                try
-                {
-                    scheduled.Schedule();
-                }
-                catch (Exception e)
-                {
-                    BatchPump.Fail(group.KeysRequests, rows, e);
-                    return rows * k;
-                }
-
-                group.KeysPending = scheduled;
+                ScatterKeys(group, rows, binding);
+            }
+            else if (pending != null)
+            {
+                group.KeysPending = pending;
                 group.KeysPendingRows = rows;
-                return rows * k;
             }
 
-            try
-            {
-                binding.Run();
-            }
-            catch (Exception e)
-            {
-                BatchPump.Fail(group.KeysRequests, rows, e);
-                return rows * k;
-            }
-
-            ScatterKeys(group, rows, binding);
             return rows * k;
         }
     }

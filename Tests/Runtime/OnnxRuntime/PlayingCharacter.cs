@@ -17,7 +17,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// hand over the pose shown first (<see cref="TransitionCharacter.Showed"/>), as the component does. A frame
     /// allocates nothing, so crowds of these measure the steady state.
     /// </remarks>
-    internal sealed class PlayingCharacter
+    public sealed class PlayingCharacter
     {
         /// <summary>Where the character stands: the world's origin, unrotated, unscaled.</summary>
         private static readonly CharacterPlace Origin = new CharacterPlace { RotationW = 1, Scale = 1 };

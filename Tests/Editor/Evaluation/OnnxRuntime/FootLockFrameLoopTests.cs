@@ -12,7 +12,6 @@ using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Evaluation.Baking;
 using DeltaInterpolator.OnnxRuntime;
-using DeltaInterpolator.Tests.Playback;
 using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.OnnxRuntime
@@ -188,7 +187,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         /// <summary>
         /// A character on the model's skeleton in Unity's space (metres, left-handed: <see cref="NamePoseConverter"/> converts)
-        /// playing the walk as its own animation at a fixed frame rate; feet are measured in the model's space.
+        /// playing the walk as its own animation at a fixed frame rate, its frames run as the component runs them
+        /// (<see cref="PlayingCharacter"/>: <see cref="TransitionCharacter.Frame"/>); feet are measured in the model's space.
         /// </summary>
         private sealed class WalkLoop
         {
@@ -202,10 +202,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly double[] _modelRoot = new double[3];
             private readonly double[] _modelRotations;
             private readonly IPoseConverter _map;
-            private readonly Skeleton? _character; // a scaled humanoid's skeleton in Unity's space, or null: the model's
+            private readonly Skeleton? _humanoid; // a scaled humanoid's skeleton in Unity's space, or null: the model's
             private readonly MainThreadScheduler _scheduler;
-            private ArrayPoseStream _stream;
-            private int _frame;
+            private readonly PlayingCharacter _character;
+            private int _frame; // the last frame's number (0: the pose shown before the first)
 
             public WalkLoop(BvhAnimation walk, Inbetweener model, double fps, bool lockFeet, double legScale = 1)
             {
@@ -229,18 +229,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     // retargeted onto it is its own animation, and its feet are measured on its own legs.
                     (SkeletonPoseConverter map, Skeleton unity) = ScaledHumanoid(c.Skeleton, legScale);
                     _map = map;
-                    _character = unity;
+                    _humanoid = unity;
                     FootRig source = FootRig.ForSource(map.Map);
                     Rig = new FootRig(unity, source.Left, source.Right, source.LegLength);
                 }
 
                 _scheduler = new MainThreadScheduler(model);
-                Player = new TransitionPlayer(_map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet });
-                _stream = new ArrayPoseStream(new double[3], new double[4 * j]);
-                _frame = -1;
+                // The walk is the character's own animation: the controller's pose at every frame's time.
+                _character = new PlayingCharacter(_map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, LockFeet = lockFeet }, Sample);
             }
 
-            public TransitionPlayer Player { get; }
+            public TransitionPlayer Player => _character.Player;
 
             /// <summary>The legs feet are measured on: the model's, or the scaled humanoid's (Unity's space, its leg length).</summary>
             public FootRig Rig { get; }
@@ -259,26 +258,32 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 return FootSkating.GroundLevel(all.ToArray(), feet.Length);
             }
 
-            public double Time => _frame / _fps;
+            /// <summary>The time of the character's last frame (0 before the first: the pose shown then is the walk's first).</summary>
+            public double Time => _character.Time;
 
             public void PlayUntil(double time)
             {
                 while ((_frame + 1) / _fps <= time + 1e-9) Step();
             }
 
+            /// <summary>One rendered frame: the scheduler pumped (as the game does once per frame), then the character's frame.</summary>
+            /// <remarks>
+            /// Frame n is rendered at exactly n / fps (the step is what is left to it; the difference of two close doubles is
+            /// exact, so the clock lands on it): a sum of 1/60 steps drifts by ulps, and at 60 fps a frame that falls half a
+            /// model frame into the transition would then take its contacts from either model frame by that drift alone.
+            /// </remarks>
             public void Step()
             {
-                _frame++;
-                Sample(Time, _stream.Root, _stream.Rotations);
                 _scheduler.Pump();
-                Player.Step(Time, ref _stream);
+                _frame++;
+                _character.Frame(_frame / _fps - Time);
             }
 
-            /// <summary>A transition to the walk's own pose <paramref name="seconds"/> from now.</summary>
+            /// <summary>A transition to the walk's own pose <paramref name="seconds"/> from now, from the pose shown.</summary>
             public void Request(double seconds)
             {
                 Sample(Time + seconds, _root, _rotations);
-                Player.RequestTransition(_root, _rotations, seconds);
+                _character.RequestTransition(_root, _rotations, seconds);
             }
 
             /// <summary>Appends the walk's and the shown pose's foot joint positions (model space) at this frame.</summary>
@@ -286,17 +291,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             {
                 Sample(Time, _root, _rotations);
                 AddFeet(_root, _rotations, truth, feet);
-                AddFeet(_stream.Root, _stream.Rotations, shown, feet);
+                AddFeet(_character.Shown.Root, _character.Shown.Rotations, shown, feet);
             }
 
             private void AddFeet(double[] root, double[] rotations, List<double> into, int[] feet)
             {
-                if (_character != null)
+                if (_humanoid != null)
                 {
                     // On the character's own legs, in Unity's space (heights and horizontal speeds as in its source space).
-                    _character.OffsetSpan.CopyTo(_localPositions);
+                    _humanoid.OffsetSpan.CopyTo(_localPositions);
                     for (int k = 0; k < 3; k++) _localPositions[k] = root[k];
-                    Core.Kinematics.ForwardKinematics.ComputeFrame(_character.ParentSpan, _localPositions, Vector3D.Read(_localPositions, 0), rotations, _globals, _globalRotations);
+                    Core.Kinematics.ForwardKinematics.ComputeFrame(_humanoid.ParentSpan, _localPositions, Vector3D.Read(_localPositions, 0), rotations, _globals, _globalRotations);
                     foreach (int f in feet)
                     {
                         for (int k = 0; k < 3; k++) into.Add(_globals[3 * f + k]);
