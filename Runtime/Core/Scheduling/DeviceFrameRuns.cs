@@ -20,21 +20,6 @@ namespace DeltaInterpolator.Core.Scheduling
         {
         }
 
-        public override void Collect(BatchBuffers buffers)
-        {
-            CollectKeys(buffers);
-            CollectRuns(buffers);
-        }
-
-        public override int Run(int tokenBudget, int framesPerRequest)
-        {
-            int spent = RunAllKeys(tokenBudget);
-            Pump.Timer?.Begin(ScheduleStage.Frames);
-            spent = RunFrames(tokenBudget, framesPerRequest, spent);
-            Pump.Timer?.End(ScheduleStage.Frames);
-            return spent;
-        }
-
         /// <summary>A finished keys run on a device backend: its <c>key_memory</c> stays there, held by a <see cref="DeviceRun"/> of its rows.</summary>
         protected override void ScatterKeys(BatchBuffers group, int rows, IInferenceBinding keysBinding)
         {
@@ -66,7 +51,7 @@ namespace DeltaInterpolator.Core.Scheduling
         /// frames are due first, then those ahead of playback, each in request order), within the budget (a run
         /// costs all of its rows).
         /// </summary>
-        private int RunFrames(int tokenBudget, int framesPerRequest, int spent)
+        protected override int RunAllFrames(int tokenBudget, int framesPerRequest, int spent)
         {
             for (int round = 0; round < framesPerRequest; round++)
             {
@@ -205,7 +190,7 @@ namespace DeltaInterpolator.Core.Scheduling
             }
         }
 
-        private void CollectRuns(BatchBuffers group)
+        protected override void CollectFrames(BatchBuffers group)
         {
             for (int i = 0; i < group.Runs.Count; i++)
             {

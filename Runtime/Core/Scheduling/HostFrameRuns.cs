@@ -16,16 +16,8 @@ namespace DeltaInterpolator.Core.Scheduling
         {
         }
 
-        public override void Collect(BatchBuffers buffers)
+        protected override int RunAllFrames(int tokenBudget, int framesPerRequest, int spent)
         {
-            CollectKeys(buffers);
-            CollectFrames(buffers);
-        }
-
-        public override int Run(int tokenBudget, int framesPerRequest)
-        {
-            int spent = RunAllKeys(tokenBudget);
-            Pump.Timer?.Begin(ScheduleStage.Frames);
             for (int round = 0; round < framesPerRequest; round++)
             {
                 int before = spent;
@@ -59,7 +51,6 @@ namespace DeltaInterpolator.Core.Scheduling
                 if (spent == before) break;
             }
 
-            Pump.Timer?.End(ScheduleStage.Frames);
             return spent;
         }
 
@@ -108,28 +99,8 @@ namespace DeltaInterpolator.Core.Scheduling
                 group.FrameIndex[r] = from;
             }
 
-            IInferenceBinding binding;
-            try
-            {
-                binding = group.FrameBinding(rows, Pump.Model.FrameBackend!);
-            }
-            catch (Exception e)
-            {
-                BatchPump.Fail(group.FrameRequests, rows, e);
-                return 0;
-            }
-
-            if (Pump.RunOrSchedule(binding, group.FrameRequests, rows, rows * per, out IAsyncInferenceBinding? pending))
-            {
-                ScatterFrames(group, rows);
-            }
-            else if (pending != null)
-            {
-                group.FramePending = pending;
-                group.FramePendingRows = rows;
-            }
-
-            return rows * per;
+            if (Launch(group, Graph.Frames, rows, rows * per, out IInferenceBinding? binding)) ScatterFrames(group, rows);
+            return binding == null ? 0 : rows * per;
         }
 
         private void ScatterFrames(BatchBuffers group, int rows)
@@ -144,7 +115,7 @@ namespace DeltaInterpolator.Core.Scheduling
             }
         }
 
-        private void CollectFrames(BatchBuffers group)
+        protected override void CollectFrames(BatchBuffers group)
         {
             IAsyncInferenceBinding? pending = group.FramePending;
             if (pending == null || !BatchPump.IsOver(pending, group.FrameRequests, group.FramePendingRows, out bool finished)) return;

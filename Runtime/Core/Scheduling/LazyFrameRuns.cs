@@ -15,8 +15,73 @@ namespace DeltaInterpolator.Core.Scheduling
         {
         }
 
+        public sealed override void Collect(BatchBuffers buffers)
+        {
+            CollectKeys(buffers);
+            CollectFrames(buffers);
+        }
+
+        /// <summary>All keys runs first (a frame run needs its rows' <c>key_memory</c>), then the subclass's frame runs.</summary>
+        public sealed override int Run(int tokenBudget, int framesPerRequest)
+        {
+            int spent = RunAllKeys(tokenBudget);
+            Pump.Timer?.Begin(ScheduleStage.Frames);
+            spent = RunAllFrames(tokenBudget, framesPerRequest, spent);
+            Pump.Timer?.End(ScheduleStage.Frames);
+            return spent;
+        }
+
+        /// <summary>Frame runs within what is left of the budget after <paramref name="spent"/>; returns the tokens spent in all.</summary>
+        protected abstract int RunAllFrames(int tokenBudget, int framesPerRequest, int spent);
+
+        /// <summary>Completes this group's scheduled frame runs that are over.</summary>
+        protected abstract void CollectFrames(BatchBuffers group);
+
+        /// <summary>Which of a group's two graphs a batch runs: the keys graph or the frame graph.</summary>
+        protected enum Graph
+        {
+            Keys,
+            Frames,
+        }
+
+        /// <summary>
+        /// Binds the batch of <paramref name="rows"/> gathered for <paramref name="graph"/> and runs it, or schedules it
+        /// (then the group holds it as pending); true where it ran to the end here, so its output is scattered now. A
+        /// binding that fails fails the rows and leaves <paramref name="binding"/> null (nothing was spent).
+        /// </summary>
+        protected bool Launch(BatchBuffers group, Graph graph, int rows, int tokens, out IInferenceBinding? binding)
+        {
+            bool keys = graph == Graph.Keys;
+            TransitionRequest?[] requests = keys ? group.KeysRequests : group.FrameRequests;
+            try
+            {
+                binding = keys ? group.KeysBinding(rows, Pump.Model.KeysBackend!) : group.FrameBinding(rows, Pump.Model.FrameBackend!);
+            }
+            catch (Exception e)
+            {
+                BatchPump.Fail(requests, rows, e);
+                binding = null;
+                return false;
+            }
+
+            if (Pump.RunOrSchedule(binding, requests, rows, tokens, out IAsyncInferenceBinding? pending)) return true;
+            if (pending == null) return false;
+            if (keys)
+            {
+                group.KeysPending = pending;
+                group.KeysPendingRows = rows;
+            }
+            else
+            {
+                group.FramePending = pending;
+                group.FramePendingRows = rows;
+            }
+
+            return false;
+        }
+
         /// <summary>Keys runs of every request waiting for its keys, within the budget; returns the tokens spent.</summary>
-        protected int RunAllKeys(int tokenBudget)
+        private int RunAllKeys(int tokenBudget)
         {
             Pump.Timer?.Begin(ScheduleStage.Keys);
             int spent = 0;
@@ -51,7 +116,7 @@ namespace DeltaInterpolator.Core.Scheduling
         /// <summary>Where a finished keys run's <c>key_memory</c> goes (read back to the host, or kept on the device).</summary>
         protected abstract void ScatterKeys(BatchBuffers group, int rows, IInferenceBinding binding);
 
-        protected void CollectKeys(BatchBuffers group)
+        private void CollectKeys(BatchBuffers group)
         {
             IAsyncInferenceBinding? pending = group.KeysPending;
             if (pending == null || !BatchPump.IsOver(pending, group.KeysRequests, group.KeysPendingRows, out bool finished)) return;
@@ -75,28 +140,8 @@ namespace DeltaInterpolator.Core.Scheduling
                 group.KeysRequests[r] = request;
             }
 
-            IInferenceBinding binding;
-            try
-            {
-                binding = group.KeysBinding(rows, Pump.Model.KeysBackend!);
-            }
-            catch (Exception e)
-            {
-                BatchPump.Fail(group.KeysRequests, rows, e);
-                return 0;
-            }
-
-            if (Pump.RunOrSchedule(binding, group.KeysRequests, rows, rows * k, out IAsyncInferenceBinding? pending))
-            {
-                ScatterKeys(group, rows, binding);
-            }
-            else if (pending != null)
-            {
-                group.KeysPending = pending;
-                group.KeysPendingRows = rows;
-            }
-
-            return rows * k;
+            if (Launch(group, Graph.Keys, rows, rows * k, out IInferenceBinding? binding)) ScatterKeys(group, rows, binding!);
+            return binding == null ? 0 : rows * k;
         }
     }
 }
