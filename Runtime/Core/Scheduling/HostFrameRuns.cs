@@ -34,20 +34,7 @@ namespace DeltaInterpolator.Core.Scheduling
                     }
                 }
 
-                for (int g = 0; g < Pump.Buffers.Count; g++)
-                {
-                    BatchBuffers group = Pump.Buffers[g];
-                    while (group.Scratch.Count > 0 && group.FramePending == null)
-                    {
-                        int used = RunFrames(group, tokenBudget - spent, spent == 0);
-                        if (used == 0) break;
-                        spent += used;
-                        group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / Pump.FramesPerRun));
-                    }
-
-                    group.Scratch.Clear();
-                }
-
+                spent = RunGathered(Graph.Frames, tokenBudget, spent);
                 if (spent == before) break;
             }
 
@@ -69,7 +56,7 @@ namespace DeltaInterpolator.Core.Scheduling
             }
         }
 
-        private int RunFrames(BatchBuffers group, int budget, bool first)
+        protected override int RunFrameBatch(BatchBuffers group, int budget, bool first)
         {
             int per = Pump.FramesPerRun;
             int rows = group.Ensure(BatchPlanner.RowsThatFit(group.Scratch.Count, Pump.MaxBatch, budget, per, first));

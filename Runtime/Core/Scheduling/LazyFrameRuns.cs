@@ -80,6 +80,40 @@ namespace DeltaInterpolator.Core.Scheduling
             return false;
         }
 
+        /// <summary>
+        /// Runs the requests gathered in each group's <see cref="BatchBuffers.Scratch"/> as batches of
+        /// <paramref name="graph"/>, one run per MaxBatch rows (all of them in one run when batched), while the budget
+        /// lasts and the group has no run of that graph pending; empties every scratch; returns the tokens spent in all.
+        /// </summary>
+        protected int RunGathered(Graph graph, int tokenBudget, int spent)
+        {
+            bool keys = graph == Graph.Keys;
+            for (int g = 0; g < Pump.Buffers.Count; g++)
+            {
+                BatchBuffers group = Pump.Buffers[g];
+                int perRow = keys ? group.Past + 1 : Pump.FramesPerRun;
+                while (group.Scratch.Count > 0 && (keys ? group.KeysPending : group.FramePending) == null)
+                {
+                    int budget = tokenBudget - spent;
+                    int used = keys ? RunKeys(group, budget, spent == 0) : RunFrameBatch(group, budget, spent == 0);
+                    if (used == 0) break;
+                    spent += used;
+                    group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / perRow));
+                }
+
+                group.Scratch.Clear();
+            }
+
+            return spent;
+        }
+
+        /// <summary>
+        /// One frame run of the first rows of a group's scratch, within <paramref name="budget"/>; returns the tokens
+        /// spent. Only a strategy that gathers frames per group (<see cref="HostFrameRuns"/>) runs them so; one that
+        /// batches frames per keys run (<see cref="DeviceFrameRuns"/>) never gathers any, and this spends nothing.
+        /// </summary>
+        protected virtual int RunFrameBatch(BatchBuffers group, int budget, bool first) => 0;
+
         /// <summary>Keys runs of every request waiting for its keys, within the budget; returns the tokens spent.</summary>
         private int RunAllKeys(int tokenBudget)
         {
@@ -94,21 +128,7 @@ namespace DeltaInterpolator.Core.Scheduling
                 group.Scratch.Add(request);
             }
 
-            for (int g = 0; g < Pump.Buffers.Count; g++)
-            {
-                BatchBuffers group = Pump.Buffers[g];
-                // One run per MaxBatch rows (all of them in one run when batched).
-                while (group.Scratch.Count > 0 && group.KeysPending == null)
-                {
-                    int used = RunKeys(group, tokenBudget - spent, spent == 0);
-                    if (used == 0) break;
-                    spent += used;
-                    group.Scratch.RemoveRange(0, Math.Min(group.Scratch.Count, used / (group.Past + 1)));
-                }
-
-                group.Scratch.Clear();
-            }
-
+            spent = RunGathered(Graph.Keys, tokenBudget, spent);
             Pump.Timer?.End(ScheduleStage.Keys);
             return spent;
         }
