@@ -24,8 +24,7 @@ namespace DeltaInterpolator.OnnxRuntime
     {
         private readonly InferenceSession _session;
         private readonly RunOptions _runOptions;
-        private readonly List<Binding> _bindings = new List<Binding>();
-        private bool _disposed;
+        private readonly OpenBindings<Binding> _bindings = new OpenBindings<Binding>();
 
         private OnnxRuntimeBackend(InferenceSession session, ModelDescription description)
         {
@@ -109,7 +108,7 @@ namespace DeltaInterpolator.OnnxRuntime
         /// <inheritdoc />
         public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
         {
-            if (_disposed) throw new ObjectDisposedException(nameof(OnnxRuntimeBackend));
+            _bindings.RequireOpen(nameof(OnnxRuntimeBackend));
             Binding binding = BindingTargets.Fill(new Binding(this), Description, inputs, outputs);
             _bindings.Add(binding);
             return binding;
@@ -118,9 +117,7 @@ namespace DeltaInterpolator.OnnxRuntime
         /// <summary>Releases the session and every binding still open.</summary>
         public void Dispose()
         {
-            if (_disposed) return;
-            _disposed = true;
-            foreach (Binding b in _bindings.ToArray()) b.Dispose();
+            if (!_bindings.Close()) return;
             _runOptions.Dispose();
             _session.Dispose();
         }

@@ -39,8 +39,7 @@ namespace DeltaInterpolator.Sentis
     public sealed class SentisBackend : IDeviceTensorBackend
     {
         private readonly Worker _worker;
-        private readonly List<Binding> _bindings = new List<Binding>();
-        private bool _disposed;
+        private readonly OpenBindings<Binding> _bindings = new OpenBindings<Binding>();
 
         private SentisBackend(Worker worker, BackendType backendType, ModelDescription description)
         {
@@ -90,7 +89,7 @@ namespace DeltaInterpolator.Sentis
         /// <inheritdoc />
         public IInferenceBinding Bind(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs)
         {
-            if (_disposed) throw new ObjectDisposedException(nameof(SentisBackend));
+            _bindings.RequireOpen(nameof(SentisBackend));
             Binding binding = BindingTargets.Fill(new Binding(this, null), Description, inputs, outputs);
             _bindings.Add(binding);
             return binding;
@@ -99,7 +98,7 @@ namespace DeltaInterpolator.Sentis
         /// <inheritdoc />
         public IDeviceTensorBinding BindOnDevice(IReadOnlyList<InferenceTensor> inputs, IReadOnlyList<InferenceTensor> outputs, string onDevice)
         {
-            if (_disposed) throw new ObjectDisposedException(nameof(SentisBackend));
+            _bindings.RequireOpen(nameof(SentisBackend));
             if (onDevice == null) throw new ArgumentNullException(nameof(onDevice));
             Binding binding = BindingTargets.Fill(new Binding(this, onDevice), Description, inputs, outputs);
             if (!binding.HasDeviceTensor)
@@ -115,9 +114,7 @@ namespace DeltaInterpolator.Sentis
         /// <summary>Disposes every open binding's tensors and the worker.</summary>
         public void Dispose()
         {
-            if (_disposed) return;
-            _disposed = true;
-            foreach (Binding b in _bindings.ToArray()) b.Dispose();
+            if (!_bindings.Close()) return;
             _worker.Dispose();
         }
 
