@@ -223,6 +223,7 @@ namespace DeltaInterpolator.Unity
         {
             if (_settingsChanged) ApplySettingsChange();
             if (_status.State == PlaybackState.Waiting && settings != null) Rebuild();
+            SchedulerPump.CheckPumpedThisFrame(this);
             Tick(FrameCallback.Update);
         }
 

@@ -19,6 +19,8 @@ namespace DeltaInterpolator.Unity
         private static readonly ProfilerMarker s_Pump = new ProfilerMarker("DeltaInterpolator.Scheduler.Pump");
         private static readonly List<TransitionScheduler> s_schedulers = new List<TransitionScheduler>();
         private static SchedulerPump? s_pump;
+        private static int s_pumpedFrame = -1;
+        private static bool s_warnedOrder;
 
         /// <summary>Pumps <paramref name="scheduler"/> once per rendered frame from now on (the pump object is created when missing).</summary>
         public static void Add(TransitionScheduler scheduler)
@@ -33,8 +35,21 @@ namespace DeltaInterpolator.Unity
         /// <summary>Stops pumping <paramref name="scheduler"/> (it is being disposed).</summary>
         public static void Remove(TransitionScheduler scheduler) => s_schedulers.Remove(scheduler);
 
+        /// <summary>
+        /// The run-time check of the execution order this relies on (Documentation~/unity-verification.md): called
+        /// from a character's <c>Update</c>, it says once in the Console when the pump has run before but not yet in
+        /// this frame, i.e. a script ordered before -1000 drives a character, which then sees last frame's work.
+        /// </summary>
+        public static void CheckPumpedThisFrame(Object character)
+        {
+            if (s_warnedOrder || s_pumpedFrame < 0 || s_pumpedFrame == Time.frameCount) return;
+            s_warnedOrder = true;
+            Debug.LogWarning($"{character.name}: the Δ-Interpolator scheduler pump ([DefaultExecutionOrder(-1000)]) had not run yet this frame when this character's Update did; a script ordered before it drives the character, whose transitions then start one frame late", character);
+        }
+
         private void Update()
         {
+            s_pumpedFrame = Time.frameCount;
             using (s_Pump.Auto())
             {
                 for (int i = 0; i < s_schedulers.Count; i++) s_schedulers[i].Pump();
