@@ -94,42 +94,6 @@ def test_the_committed_fixture_checkpoint_loads():
     loaded = load_checkpoint(fixture)
     assert loaded.config.joints == 22 and loaded.unit_scale == pytest.approx(0.01)
 
-def bad_checkpoint(kind: str, folder: Path, good: Path) -> Path:
-    path = folder / f"{kind}.pt"
-    data = good.read_bytes()
-    if kind == "zero-byte":
-        path.write_bytes(b"")
-    elif kind == "random":
-        path.write_bytes(np.random.default_rng(1).bytes(4096))
-    elif kind == "truncated":
-        path.write_bytes(data[: len(data) // 2])
-    elif kind == "directory":
-        path.mkdir()
-    elif kind == "missing":
-        pass
-    elif kind == "fifo":
-        os.mkfifo(path)
-    else:
-        state = read_checkpoint(good)
-        if kind == "wrong-shape":
-            name = next(iter(state["model"]))
-            state["model"][name] = torch.zeros(3, 5)
-        elif kind == "wrong-architecture":
-            state["model_config"] = {**state["model_config"], "width": state["model_config"]["width"] * 2}
-        elif kind == "unknown-config":
-            state["model_config"] = {**state["model_config"], "colour": "blue"}
-        elif kind == "nan-weights":
-            name = next(k for k, v in state["model"].items() if v.is_floating_point())
-            state["model"][name] = torch.full_like(state["model"][name], float("nan"))
-        elif kind == "not-ours":
-            torch.save({"weights": torch.zeros(3), "scale": 0.5}, path)
-            return path
-        elif kind == "a-list":
-            torch.save([torch.zeros(3)], path)
-            return path
-        save_checkpoint_file(state, path)
-    return path
-
 BAD_CHECKPOINTS = ["zero-byte", "random", "truncated", "directory", "missing", "fifo", "wrong-shape",
                    "wrong-architecture", "unknown-config", "nan-weights", "not-ours", "a-list"]
 
