@@ -42,8 +42,14 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>Where the character stands now (the engine applied last frame's root motion since).</summary>
         public CharacterPlace Place;
 
-        /// <summary>The controller's own root velocity last frame (world, per second), as the animation job read it.</summary>
+        /// <summary>
+        /// The controller's own root velocity last frame (per second), as the animation job read it off the stream: in the
+        /// stream's frame (<see cref="TransitionCharacter.RootMotionFrame"/> decides which).
+        /// </summary>
         public double ControllerVelocityX, ControllerVelocityY, ControllerVelocityZ;
+
+        /// <summary>The root velocity the engine applied last frame (world, per second; Unity: <c>Animator.velocity</c>).</summary>
+        public double AppliedVelocityX, AppliedVelocityY, AppliedVelocityZ;
     }
 
     /// <summary>
@@ -75,8 +81,11 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>The transition's pose in the stream's space: root position (3) then bones × 4 rotations (w x y z). The character's buffer: copy it, do not keep it.</summary>
         public double[] Pose;
 
-        /// <summary>The transition's root velocity (world, per second; zero with root motion off).</summary>
+        /// <summary>The transition's root velocity (per second, in the stream's frame, as the job writes it; zero with root motion off).</summary>
         public double RootVelocityX, RootVelocityY, RootVelocityZ;
+
+        /// <summary>A one-line warning, once per character, when the engine's root motion matched neither frame (see <see cref="RootMotionFrameCheck"/>); else null.</summary>
+        public string? RootMotionWarning;
 
         /// <summary>True with root motion on: the job blends <see cref="RootVelocityX"/>… over the controller's.</summary>
         public bool RootMotion;

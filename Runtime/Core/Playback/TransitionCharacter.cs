@@ -36,6 +36,8 @@ namespace DeltaInterpolator.Core.Playback
         private RootFrame _deferredFrame;
         private double _shownTime;
         private bool _shownPending;
+        private QuaternionD _evaluatedRotation;   // the character's rotation when the engine evaluated the last frame played
+        private bool _evaluatedUnblended;         // the last frame played let the controller's root velocity through unchanged
 
         /// <summary>Creates a character whose first pose shown is the one the engine shows before its first frame.</summary>
         /// <param name="converter">The character's bones ↔ the model's joints.</param>
@@ -66,6 +68,9 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>The character's root motion (the space its poses and targets are in).</summary>
         public RootMotion RootMotion { get; }
+
+        /// <summary>Which frame the engine's stream velocity is in, decided from what the engine applied (see <see cref="RootMotionFrameCheck"/>).</summary>
+        public RootMotionFrameCheck RootMotionFrame { get; } = new RootMotionFrameCheck();
 
         /// <summary>The character's clock (the Animator's update mode).</summary>
         public AnimationClock Clock => _clock;
@@ -121,18 +126,25 @@ namespace DeltaInterpolator.Core.Playback
             double time = _clock.Time;
             if (!_status.TryBeginFrame(Player, time, _model, _engine)) return Failure(output);
 
+            // The stream's velocity is in a frame the engine does not name: while nothing blended it last frame, what the
+            // engine applied in the world says which (RootMotionFrameCheck); the plan works in the world.
+            var streamVelocity = new Vector3D(input.ControllerVelocityX, input.ControllerVelocityY, input.ControllerVelocityZ);
+            if (input.ApplyRootMotion && _evaluatedUnblended)
+                output.RootMotionWarning = RootMotionFrame.Observe(streamVelocity, new Vector3D(input.AppliedVelocityX, input.AppliedVelocityY, input.AppliedVelocityZ), _evaluatedRotation);
+            QuaternionD rotation = RootMotion.CharacterFrame.Rotation;
             Span<double> pose = _pose;
             Player.PoseRoot.CopyTo(pose.Slice(0, 3));
             Player.PoseRotations.CopyTo(pose.Slice(3));
-            var controller = new Vector3D(input.ControllerVelocityX, input.ControllerVelocityY, input.ControllerVelocityZ);
-            RootMotion.Plan(Player, time, _clock.LastStep, controller, pose.Slice(0, 3), pose.Slice(3, 4));
-            Vector3D velocity = RootMotion.TransitionVelocity;
+            RootMotion.Plan(Player, time, _clock.LastStep, RootMotionFrame.ToWorld(streamVelocity, rotation), pose.Slice(0, 3), pose.Slice(3, 4));
+            Vector3D velocity = RootMotionFrame.ToStream(RootMotion.TransitionVelocity, rotation);
             output.Played = true;
             output.Weight = Player.Weight;
             output.RootVelocityX = velocity.X;
             output.RootVelocityY = velocity.Y;
             output.RootVelocityZ = velocity.Z;
             output.RootMotion = RootMotion.Enabled;
+            _evaluatedRotation = rotation;
+            _evaluatedUnblended = Player.Weight <= 0;
             _shownTime = time;
             _shownPending = true;
             return output;

@@ -1,6 +1,7 @@
 using System;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Tests.Playback;
 
@@ -10,7 +11,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// One character of a simulated game loop, driven the way MotionInbetweener drives it: what the engine read goes
     /// into one <see cref="TransitionCharacter.Frame"/> call, the controller's pose is written, and the frame's pose
     /// is blended over it into the pose shown (the animation job's output), which the next frame hands back. Root
-    /// motion is off and the character stands at the world's origin, so the stream's space is the character's.
+    /// motion is off and the character stands at the world's origin, so the stream's space is the character's, unless
+    /// <see cref="PlayWithRootMotion"/> turns it on: then the controller moves the character by a velocity, and this type
+    /// does what the Animator does after the job (applies the stream's velocity, read in the engine's frame).
     /// </summary>
     /// <remarks>
     /// The frame's owner pumps the scheduler (once per rendered frame for every character), not this type. Requests
@@ -28,6 +31,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private readonly double[] _sampledTarget;
         private ArrayPoseStream _stream;
         private bool _sampled;
+        private CharacterPlace _place = Origin;
+        private bool _rootMotion;
+        private RootVelocityFrame _engineFrame;
+        private Vector3D _controllerVelocity;     // the controller's root motion, in the character's frame
+        private QuaternionD _appliedTurn = QuaternionD.Identity;
+        private Vector3D _streamVelocity;         // what the job read off the stream last frame
+        private Vector3D _appliedVelocity;        // what the Animator applied last frame (world)
 
         /// <param name="converter">The character's bones ↔ the model's joints.</param>
         /// <param name="scheduler">The scheduler the frame's owner pumps.</param>
@@ -55,6 +65,31 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>What the last frame showed (the animation job's output).</summary>
         public ArrayPoseStream Shown { get; }
 
+        /// <summary>Where the character stands in the world (moved by root motion after <see cref="PlayWithRootMotion"/>).</summary>
+        public RootFrame Place => _place.ToFrame();
+
+        /// <summary>The character's decision of the stream velocity's frame.</summary>
+        public RootMotionFrameCheck RootMotionFrame => _character.RootMotionFrame;
+
+        /// <summary>The root-motion warnings the frames gave (each frame's <see cref="CharacterFrameOutput.RootMotionWarning"/>), in order.</summary>
+        public System.Collections.Generic.List<string> RootMotionWarnings { get; } = new System.Collections.Generic.List<string>();
+
+        /// <summary>
+        /// Root motion on from the next frame: the character stands at <paramref name="place"/>, the controller keeps its
+        /// root bone in place and moves the character at <paramref name="controllerVelocity"/> (its own frame, per second);
+        /// the engine puts the velocity on the stream in <paramref name="engineFrame"/> and applies it in that frame.
+        /// <paramref name="appliedTurnDegrees"/> turns what it applies about the vertical, as a script changing root
+        /// motion after the controller would (0: none).
+        /// </summary>
+        public void PlayWithRootMotion(RootFrame place, Vector3D controllerVelocity, RootVelocityFrame engineFrame, double appliedTurnDegrees = 0)
+        {
+            _place = PlaceOf(place);
+            _rootMotion = true;
+            _controllerVelocity = controllerVelocity;
+            _engineFrame = engineFrame;
+            _appliedTurn = Quaternions.FromAxisAngle(Vector3D.UnitY, appliedTurnDegrees * Math.PI / 180.0);
+        }
+
         /// <summary>
         /// One rendered frame <paramref name="deltaTime"/> seconds after the last: the character's frame, the
         /// controller's pose at the new time, the transition blended over it into <see cref="Shown"/>.
@@ -68,29 +103,55 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 DeltaTime = deltaTime,
                 UnscaledDeltaTime = deltaTime,
                 FixedDeltaTime = 0.02,
-                ApplyRootMotion = false,
-                Place = Origin,
+                ApplyRootMotion = _rootMotion,
+                Place = _place,
+                ControllerVelocityX = _streamVelocity.X, ControllerVelocityY = _streamVelocity.Y, ControllerVelocityZ = _streamVelocity.Z,
+                AppliedVelocityX = _appliedVelocity.X, AppliedVelocityY = _appliedVelocity.Y, AppliedVelocityZ = _appliedVelocity.Z,
             };
             CharacterFrameOutput frame = _character.Frame(input, ShownPose(), _sampled ? _sampledTarget : ReadOnlySpan<double>.Empty);
             _sampled = false;
             // A plain check (NUnit's Assert would allocate): every frame here advances the clock and plays.
             if (!frame.Played) throw new InvalidOperationException("a frame did not play: " + frame.FailureReason, frame.Error);
+            if (frame.RootMotionWarning != null) RootMotionWarnings.Add(frame.RootMotionWarning);
             _controller(Time, _stream.Root, _stream.Rotations);
             var pose = new ReadOnlySpan<double>(frame.Pose);
             PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), Shown.Root, Shown.Rotations);
+            if (_rootMotion) ApplyRootMotion(frame, deltaTime);
         }
+
+        // The job's ProcessRootMotion (the controller's velocity on the stream, the transition's blended over it), then
+        // the Animator moving the character by the stream's velocity, read in the engine's frame.
+        private void ApplyRootMotion(in CharacterFrameOutput frame, double deltaTime)
+        {
+            RootFrame place = _place.ToFrame();
+            bool local = _engineFrame == RootVelocityFrame.Local;
+            Vector3D controller = local ? _controllerVelocity : Quaternions.Apply(place.Rotation, _controllerVelocity);
+            var transition = new Vector3D(frame.RootVelocityX, frame.RootVelocityY, frame.RootVelocityZ);
+            Vector3D stream = frame.RootMotion ? RootMotion.BlendVelocity(frame.Weight, transition, controller) : controller;
+            Vector3D applied = Quaternions.Apply(_appliedTurn, local ? Quaternions.Apply(place.Rotation, stream) : stream);
+            _place = PlaceOf(new RootFrame(place.Position + deltaTime * applied, place.Rotation, place.Scale));
+            _streamVelocity = controller;
+            _appliedVelocity = applied;
+        }
+
+        private static CharacterPlace PlaceOf(RootFrame f) => new CharacterPlace
+        {
+            X = f.Position.X, Y = f.Position.Y, Z = f.Position.Z,
+            RotationW = f.Rotation.W, RotationX = f.Rotation.X, RotationY = f.Rotation.Y, RotationZ = f.Rotation.Z,
+            Scale = f.Scale,
+        };
 
         /// <summary>A transition to a pose given in the character's space, from the pose shown, as the component requests one.</summary>
         public int RequestTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double seconds)
         {
-            _character.Showed(Origin, false, ShownPose());
+            _character.Showed(_place, _rootMotion, ShownPose());
             return _character.RequestTransition(targetRoot, targetRotations, seconds);
         }
 
         /// <summary>A transition whose target the engine samples later (<see cref="Sampled"/>), as the component requests a clip's pose.</summary>
         public int DeferTransition(double seconds)
         {
-            _character.Showed(Origin, false, ShownPose());
+            _character.Showed(_place, _rootMotion, ShownPose());
             return _character.DeferTransition(seconds);
         }
 

@@ -18,7 +18,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// and off (the controller moves the root bone inside a character that stays put). The loop does what
     /// the Unity component and its animation job do each frame, with <see cref="RootMotion"/> between the
     /// stream and <see cref="TransitionPlayer"/>, and what the Animator does after the job (apply the
-    /// velocity). The transition plays the network's SLERP/LERP baseline (<see cref="PlaybackSettings.SlerpOnly"/>),
+    /// velocity, read in the character's frame as Unity's Kinematica writes it; <see cref="RootMotionFrameTests"/> covers
+    /// an engine in the world's frame too). The transition plays the network's SLERP/LERP baseline (<see cref="PlaybackSettings.SlerpOnly"/>),
     /// so the root trajectory it follows is known; a last case runs the tiny network and checks arrival.
     /// </summary>
     [TestFixture]
@@ -141,6 +142,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private double _nextStep;
             private double[] _sampledTarget = new double[0];
             private bool _sampled;
+            private Vector3D _appliedVelocity;    // what the Animator applied last frame (world)
 
             public Loop(bool applyRootMotion, double speed, double characterScale, double fps, double jitter, bool slerpOnly)
             {
@@ -236,7 +238,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Time += dt;
                 LastStep = dt;
                 _nextStep = Draw();
-                Vector3D controllerVelocity = _rootMotionOn ? Quaternions.Apply(Character.Rotation, (_speed) * Vector3D.UnitZ) : Vector3D.Zero;
+                // On the stream, the controller's velocity is in the character's frame.
+                Vector3D controllerVelocity = _rootMotionOn ? _speed * Vector3D.UnitZ : Vector3D.Zero;
 
                 // The frame's owner pumps the scheduler; then MotionInbetweener.Update: what Unity read, one call.
                 _scheduler.Pump();
@@ -252,6 +255,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     ControllerVelocityX = controllerVelocity.X,
                     ControllerVelocityY = controllerVelocity.Y,
                     ControllerVelocityZ = controllerVelocity.Z,
+                    AppliedVelocityX = _appliedVelocity.X,
+                    AppliedVelocityY = _appliedVelocity.Y,
+                    AppliedVelocityZ = _appliedVelocity.Z,
                 };
                 CharacterFrameOutput frame = _character.Frame(input, _shown, _sampled ? _sampledTarget : ReadOnlySpan<double>.Empty);
                 // Every step advances the clock: each one plays (NUnit's Assert would allocate, so a plain check).
@@ -267,8 +273,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 var shown = new Span<double>(_shown);
                 PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), shown.Slice(0, 3), shown.Slice(3));
 
-                // The Animator applies root motion after the job (only when applyRootMotion is on).
-                if (_rootMotionOn) Character = new RootFrame(Character.Position + dt * velocity, Character.Rotation, Character.Scale);
+                // The Animator applies root motion after the job (only when applyRootMotion is on), turning the stream's
+                // velocity from the character's frame into the world.
+                _appliedVelocity = Quaternions.Apply(Character.Rotation, velocity);
+                if (_rootMotionOn) Character = new RootFrame(Character.Position + dt * _appliedVelocity, Character.Rotation, Character.Scale);
             }
 
             private static CharacterPlace Place(RootFrame f) => new CharacterPlace
