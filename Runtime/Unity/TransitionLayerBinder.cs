@@ -24,6 +24,7 @@ namespace DeltaInterpolator.Unity
         // [0..2] the transition's root velocity (main thread → job), [3..5] the controller's (job → main thread), [6] 1 with root motion on.
         private NativeArray<double> _rootVelocity;
         private PlayableGraph _graph;
+        private readonly Animator _animator;
 
         /// <summary>
         /// Binds <paramref name="bones"/> of <paramref name="animator"/> (the root bone first) in a graph named
@@ -33,6 +34,7 @@ namespace DeltaInterpolator.Unity
         public TransitionLayerBinder(Animator animator, Transform[] bones, string graphName, ushort sortingOrder)
         {
             const int rootBone = 0;
+            _animator = animator;
             double[] initialPose = UnityPoses.Read(bones, rootBone);
             int n = bones.Length;
             _bones = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
@@ -63,24 +65,36 @@ namespace DeltaInterpolator.Unity
         /// <summary>The pose the job showed last.</summary>
         public ReadOnlySpan<double> Shown => _shown.AsReadOnlySpan();
 
-        /// <summary>What Unity read for this frame callback: its clock, where the character stands, the controller's root velocity the job saw.</summary>
-        public CharacterFrameInput Gather(FrameCallback callback, Animator animator) => new CharacterFrameInput
+        /// <summary>
+        /// What Unity read for this frame callback: its clock, where the character stands, the controller's root velocity the job
+        /// saw on the stream (in the stream's frame) and what the Animator applied in the world (<c>Animator.velocity</c>, the
+        /// evidence for that frame: Core's <c>RootMotionFrameCheck</c>).
+        /// </summary>
+        public CharacterFrameInput Gather(FrameCallback callback, Animator animator)
         {
-            Callback = callback,
-            ClockMode = (AnimationClockMode)(int)animator.updateMode,
-            DeltaTime = Time.deltaTime,
-            UnscaledDeltaTime = Time.unscaledDeltaTime,
-            FixedDeltaTime = Time.fixedDeltaTime,
-            ApplyRootMotion = animator.applyRootMotion,
-            Place = UnityPoses.Place(animator.transform),
-            ControllerVelocityX = _rootVelocity[3],
-            ControllerVelocityY = _rootVelocity[4],
-            ControllerVelocityZ = _rootVelocity[5],
-        };
+            Vector3 applied = animator.velocity;
+            return new CharacterFrameInput
+            {
+                Callback = callback,
+                ClockMode = (AnimationClockMode)(int)animator.updateMode,
+                DeltaTime = Time.deltaTime,
+                UnscaledDeltaTime = Time.unscaledDeltaTime,
+                FixedDeltaTime = Time.fixedDeltaTime,
+                ApplyRootMotion = animator.applyRootMotion,
+                Place = UnityPoses.Place(animator.transform),
+                ControllerVelocityX = _rootVelocity[3],
+                ControllerVelocityY = _rootVelocity[4],
+                ControllerVelocityZ = _rootVelocity[5],
+                AppliedVelocityX = applied.x,
+                AppliedVelocityY = applied.y,
+                AppliedVelocityZ = applied.z,
+            };
+        }
 
-        /// <summary>Copies a played frame into the job's buffers.</summary>
+        /// <summary>Copies a played frame into the job's buffers; says the frame's root-motion warning (once per character) in the Console.</summary>
         public void Write(in CharacterFrameOutput frame)
         {
+            if (frame.RootMotionWarning != null) Debug.LogWarning(_animator.name + ": " + frame.RootMotionWarning, _animator);
             new ReadOnlySpan<double>(frame.Pose).CopyTo(_pose.AsSpan());
             _rootVelocity[0] = frame.RootVelocityX;
             _rootVelocity[1] = frame.RootVelocityY;

@@ -22,15 +22,17 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> Shown;
         public NativeArray<double> Weight;
 
-        /// <summary>[0..2] the transition's root velocity (world, per second; in), [3..5] the controller's (out), [6] 1 with root motion on.</summary>
+        /// <summary>[0..2] the transition's root velocity (in), [3..5] the controller's (out), both per second in the stream's frame; [6] 1 with root motion on.</summary>
         public NativeArray<double> RootVelocity;
 
         public int RootBone;
 
         public void ProcessRootMotion(AnimationStream stream)
         {
-            // The stream's velocity is the root motion the Animator applies after this job (world space, as
-            // Animator.velocity reports it). The controller's is kept for the main thread's next plan.
+            // The stream's velocity is the root motion the Animator applies after this job, in a frame Unity's C# does not
+            // name (the character's, by Kinematica's WriteRootMotion; Core's RootMotionFrameCheck decides it from
+            // Animator.velocity while the game runs). The blend is linear, so it is the same in either frame; the
+            // controller's is kept for the main thread's next plan and for that check.
             Vector3 controller = stream.velocity;
             RootVelocity[3] = controller.x;
             RootVelocity[4] = controller.y;

@@ -18,6 +18,8 @@ namespace UnityEngine
 
         public bool applyRootMotion { get => throw null!; set => throw null!; }
 
+        public Vector3 velocity => throw null!;
+
         public Avatar avatar { get => throw null!; set => throw null!; }
 
         public AnimatorUpdateMode updateMode { get => throw null!; set => throw null!; }
