@@ -90,6 +90,8 @@ STUB_ASSEMBLIES = [
     ('UnityEditor', ['UnityEngine'], True),
     ('Unity.InferenceEngine', ['UnityEngine'], False),
     ('Unity.InferenceEngine.ONNX.Editor', ['UnityEngine', 'UnityEditor', 'Unity.InferenceEngine'], True),
+    # com.unity.test-framework 1.4.6's runtime assembly ([UnityTest], UnityEngine.TestTools); it references NUnit
+    ('UnityEngine.TestRunner', ['UnityEngine', 'nunit.framework'], False),
 ]
 
 
@@ -300,8 +302,16 @@ class Compiler:
 def build_stubs(comp, outdir):
     os.makedirs(outdir, exist_ok=True)
     built = {}
+    nunit = find_nunit()
+    if nunit:
+        built['nunit.framework'] = nunit
     ok = True
     for name, refs, _ in STUB_ASSEMBLIES:
+        if any(r not in built for r in refs):
+            print('unity-check: FAIL: stub assembly %s needs %s (restore Tools~/Tests first for nunit.framework.dll)'
+                  % (name, ', '.join(r for r in refs if r not in built)))
+            ok = False
+            continue
         files = sorted(glob.glob(os.path.join(STUBS, name, '**', '*.cs'), recursive=True))
         out = os.path.join(outdir, name + '.dll')
         newest = max([os.path.getmtime(f) for f in files] + [os.path.getmtime(__file__)])
@@ -314,6 +324,7 @@ def build_stubs(comp, outdir):
                 ok = False
                 continue
         built[name] = out
+    built.pop('nunit.framework', None)
     return built if ok else None
 
 
@@ -450,6 +461,11 @@ def build_config(comp, root, cname, config, outdir, stubs, nunit, verbose=False,
                 ok = False
                 continue
             refs.append(nunit)
+            # Unity's test assemblies (optionalUnityReferences: TestAssemblies) also see the test framework's runtime
+            # assembly, as one that names it in `references` does
+            if 'TestAssemblies' in a.get('optionalUnityReferences', []) and not a.get('noEngineReferences', False) \
+                    and stubs['UnityEngine.TestRunner'] not in refs:
+                refs.append(stubs['UnityEngine.TestRunner'])
         if not a.files:
             continue
         good, lines = comp.compile(out, a.files, refs, a.defines, rsp=a.rsp, unsafe=a.get('allowUnsafeCode', False),

@@ -25,5 +25,11 @@ namespace UnityEditor
 
         // source: unity:Editor/Mono/AssetDatabase/AssetDatabaseSearching.cs
         public static string[] FindAssets(string filter) => throw null!;
+
+        public static string CreateFolder(string parentFolder, string newFolderName) => throw null!;
+
+        public static void ImportAsset(string path) => throw null!;
+
+        public static bool DeleteAsset(string path) => throw null!;
     }
 }

@@ -7,6 +7,8 @@ namespace UnityEngine
 
         public static void DestroyImmediate(Object obj) => throw null!;
 
+        public static T Instantiate<T>(T original) where T : Object => throw null!;
+
         public static void DontDestroyOnLoad(Object target) => throw null!;
 
         public static T FindAnyObjectByType<T>() where T : Object => throw null!;

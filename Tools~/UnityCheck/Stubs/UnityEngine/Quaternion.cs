@@ -11,5 +11,7 @@ namespace UnityEngine
         public Quaternion(float x, float y, float z, float w) => throw null!;
 
         public static Quaternion Euler(float x, float y, float z) => throw null!;
+
+        public static Vector3 operator *(Quaternion rotation, Vector3 point) => throw null!;
     }
 }

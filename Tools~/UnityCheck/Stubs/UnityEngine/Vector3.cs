@@ -8,5 +8,7 @@ namespace UnityEngine
         public float z;
 
         public Vector3(float x, float y, float z) => throw null!;
+
+        public static Vector3 operator -(Vector3 a, Vector3 b) => throw null!;
     }
 }
