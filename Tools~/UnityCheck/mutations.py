@@ -111,6 +111,10 @@ MUTATIONS = [
     ('a menu the docs name but the package lacks', 'editor', 'DeltaInterpolator.Editor',
      lambda r: open(os.path.join(r, 'README.md'), 'a').write('\nOpen *Window → Animation → No Such Window*.\n'),
      'rule', r'^menu: README\.md:\d+: \*Window → Animation → No Such Window\*'),
+    ('a menu a message names but the package lacks', 'editor', 'DeltaInterpolator.Editor',
+     lambda r: write(r, 'Editor/MutationMessage.cs', 'namespace DeltaInterpolator.Editor { internal static class MutationMessage { '
+                     'internal static string Hint() => "Assign a model (Assets → Create → Δ-Interpolator → No Such Asset)."; } }\n'),
+     'rule', r'^menu: DeltaInterpolator\.Editor: DeltaInterpolator\.Editor\.MutationMessage\.Hint says "Assets → Create → Δ-Interpolator → No Such Asset"'),
 ]
 
 

@@ -16,7 +16,8 @@ using System.Text.RegularExpressions;
 //   serial   [SerializeField] fields (and public fields of UnityEngine.Object types) have types Unity serializes;
 //   menu     every menu path the docs name (*Add Component → …*, *Assets → Create → …*, *Window → …*)
 //            exists as an AddComponentMenu/CreateAssetMenu/MenuItem attribute (or, for Add Component, as
-//            the nicified name of a MonoBehaviour);
+//            the nicified name of a MonoBehaviour); so does every menu path the package's own messages name
+//            (string literals in its compiled code: "… (Assets → Create → Δ-Interpolator → …)");
 //   package  package.json's documentationUrl/changelogUrl/licensesUrl are absolute http(s) links or absent;
 //   friends  [InternalsVisibleTo] of DeltaInterpolator.Core names only test assemblies (what the Editor-only
 //            assemblies and the tools use of Core is its public API); of another package assembly, only test
@@ -228,6 +229,11 @@ static class Program
     static readonly string[] UnityOwnMenus = { "Window → Package Manager" };
     // Unity's own sub-menus the docs name as a place ("the baker is under *Window → Animation*"): only the bare path is Unity's.
     static readonly string[] UnitySubMenus = { "Window → Animation", "Window → General" };
+    // A menu path inside a message: a top-level menu (or the Project window's Create menu, which is Assets → Create, or
+    // Unity's Project Settings window) and its items, up to what ends a phrase in a sentence.
+    static readonly Regex MessageMenuPath = new(@"\b((?:Add Component|Assets|Create|Window|GameObject|Component|Tools|Edit|Project Settings) → [^""().;:,\n]+)");
+    // Unity's own windows the messages walk through.
+    static readonly string[] UnityOwnMessageMenus = { "Window → Package Manager", "Project Settings", "Edit → Project Settings" };
 
     static void CheckMenus(List<Type> types, List<string> docs, string root)
     {
@@ -270,6 +276,47 @@ static class Program
                     }
                     if (!ok) Violations.Add($"menu: {where} names a menu the package does not declare (MenuItem: {string.Join(", ", menuItems)}; AddComponentMenu: {string.Join(", ", addComponent)}; CreateAssetMenu: {string.Join(", ", createAsset)})");
                 }
+        }
+
+        // The package's own messages (dialogs, Console lines, exceptions, help boxes): a menu they send the user to must exist.
+        foreach (var t in types)
+            foreach (var m in t.GetMethods(All).Cast<MethodBase>().Concat(t.GetConstructors(All)))
+                foreach (var text in StringLiterals(m))
+                    foreach (Match match in MessageMenuPath.Matches(text))
+                    {
+                        string said = match.Groups[1].Value.Trim().TrimEnd('…').Trim();
+                        if (UnityOwnMessageMenus.Any(u => said.StartsWith(u))) continue;
+                        var parts = said.Split(" → ").Select(p => p.Trim().TrimEnd('…').Trim()).Where(p => p.Length > 0).ToArray();
+                        if (parts[0] == "Create") parts = new[] { "Assets" }.Concat(parts).ToArray();
+                        string rest = string.Join("/", parts.Skip(1));
+                        bool ok;
+                        if (parts[0] == "Add Component") ok = addComponent.Contains(rest) || addComponent.Contains("Scripts/" + rest);
+                        else
+                        {
+                            var full = string.Join("/", parts);
+                            // A message may cut a name at its parenthesis ("… → In-betweening Model (shipped default)").
+                            ok = menuItems.Any(p => p == full || p.StartsWith(full + "/") || p.StartsWith(full + " ("))
+                                 || (parts.Length > 2 && parts[1] == "Create" && createAsset.Any(c => c == string.Join("/", parts.Skip(2)) || c.StartsWith(string.Join("/", parts.Skip(2)) + "/")));
+                        }
+                        if (!ok) Violations.Add($"menu: {t.Assembly.GetName().Name}: {t.FullName}.{m.Name} says \"{said}\", a menu the package does not declare (MenuItem: {string.Join(", ", menuItems)}; CreateAssetMenu: {string.Join(", ", createAsset)})");
+                    }
+    }
+
+    // The string literals a method loads (ldstr, 0x72, with a user-string token 0x70xxxxxx); a byte pattern that only
+    // looks like one resolves to no string and is skipped.
+    static IEnumerable<string> StringLiterals(MethodBase m)
+    {
+        byte[]? il;
+        try { il = m.GetMethodBody()?.GetILAsByteArray(); }
+        catch (Exception) { yield break; }
+        if (il == null) yield break;
+        for (int i = 0; i + 4 < il.Length; i++)
+        {
+            if (il[i] != 0x72 || il[i + 4] != 0x70) continue;
+            string? s = null;
+            try { s = m.Module.ResolveString(BitConverter.ToInt32(il, i + 1)); }
+            catch (Exception) { }
+            if (s != null && s.Contains('→')) yield return s;
         }
     }
 
