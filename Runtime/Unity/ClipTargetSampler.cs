@@ -28,11 +28,14 @@ namespace DeltaInterpolator.Unity
         private NativeArray<int> _requests;
         private AnimationClipPlayable _clipPlayable;
         private AnimationClip? _clip;
+        private float _time;
         private int _request;
+        private readonly HumanoidTargetCheck _check;
 
-        public ClipTargetSampler(PlayableGraph graph, Animator animator, NativeArray<TransformStreamHandle> bones, int rootBone, ushort sortingOrder)
+        public ClipTargetSampler(PlayableGraph graph, Animator animator, Transform[] boneTransforms, NativeArray<TransformStreamHandle> bones, int rootBone, ushort sortingOrder)
         {
             _graph = graph;
+            _check = new HumanoidTargetCheck(animator, boneTransforms);
             _target = new NativeArray<double>(3 + 4 * bones.Length, Allocator.Persistent);
             _requests = new NativeArray<int>(2, Allocator.Persistent);
             var job = new ClipTargetReadJob { Bones = bones, Target = _target, Requests = _requests, RootBone = rootBone };
@@ -60,6 +63,7 @@ namespace DeltaInterpolator.Unity
             }
 
             _clipPlayable.SetTime(time);
+            _time = time;
             // A newer request supersedes one not read yet: only the latest counts as read.
             _requests[0] = ++_request;
         }
@@ -68,10 +72,17 @@ namespace DeltaInterpolator.Unity
         /// The pose of the latest <see cref="Sample"/> (root position, then bones × 4 rotations) once the animation
         /// evaluation has read it; empty while it has not (e.g. the Animator was culled and did not evaluate).
         /// </summary>
-        public ReadOnlySpan<double> Read() => _request != 0 && _requests[1] == _request ? _target.AsReadOnlySpan() : default;
+        public ReadOnlySpan<double> Read()
+        {
+            if (_request == 0 || _requests[1] != _request) return default;
+            // Humanoid targets come off a path no Unity code demonstrates: held once per clip against SampleAnimation's.
+            _check.Check(_clip!, _time, _target.AsReadOnlySpan());
+            return _target.AsReadOnlySpan();
+        }
 
         public void Dispose()
         {
+            _check.Dispose();
             if (_target.IsCreated) _target.Dispose();
             if (_requests.IsCreated) _requests.Dispose();
         }

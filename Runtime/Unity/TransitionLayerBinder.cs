@@ -55,7 +55,7 @@ namespace DeltaInterpolator.Unity
             output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
             output.SetSortingOrder(sortingOrder);
             // Clip targets are read by a pass-through layer just before this one.
-            Sampler = new ClipTargetSampler(_graph, animator, _bones, rootBone, (ushort)(sortingOrder - 1));
+            Sampler = new ClipTargetSampler(_graph, animator, bones, _bones, rootBone, (ushort)(sortingOrder - 1));
             _graph.Play();
         }
 
