@@ -226,7 +226,8 @@ static class Program
     // ---- menu ----------------------------------------------------------------------------------------
     static readonly Regex MenuPath = new(@"\*((?:Add Component|Assets|Window|GameObject|Component|Tools) → [^*\n]+)\*");
     // Unity's own menus the docs walk through: the path and everything below it are Unity's.
-    static readonly string[] UnityOwnMenus = { "Window → Package Manager" };
+    // (Test Runner: com.unity.test-framework 1.4.6, UnityEditor.TestRunner/TestRunnerWindow.cs:72.)
+    static readonly string[] UnityOwnMenus = { "Window → Package Manager", "Window → General → Test Runner" };
     // Unity's own sub-menus the docs name as a place ("the baker is under *Window → Animation*"): only the bare path is Unity's.
     static readonly string[] UnitySubMenus = { "Window → Animation", "Window → General" };
     // A menu path inside a message: a top-level menu (or the Project window's Create menu, which is Assets → Create, or
