@@ -22,6 +22,7 @@ namespace DeltaInterpolator.Unity
         private GameObject? _copy;
         private Transform[]? _copyBones;
         private AnimationClip? _checked;
+        private bool _unavailable;
 
         public HumanoidTargetCheck(Animator animator, Transform[] bones)
         {
@@ -35,8 +36,8 @@ namespace DeltaInterpolator.Unity
         {
             if (clip == _checked) return;
             _checked = clip;
-            if (!_animator.isHuman) return;
-            if (_copy == null) Copy();
+            if (!_animator.isHuman || _unavailable) return;
+            if (_copy == null && !Copy()) return;
             clip.SampleAnimation(_copy!, time);
             for (int b = 0; b < _bones.Length; b++)
             {
@@ -57,8 +58,9 @@ namespace DeltaInterpolator.Unity
             _copy = null;
         }
 
-        // The character's hierarchy under its Animator (names and local transforms only) with the same avatar, hidden and never saved.
-        private void Copy()
+        // The character's hierarchy under its Animator (names and local transforms only) with the same avatar, hidden and
+        // never saved; false (said once) when a mapped bone is not below the Animator, so the copy cannot stand in for it.
+        private bool Copy()
         {
             var copy = new GameObject(_animator.name + " (Δ-Interpolator target check)") { hideFlags = HideFlags.HideAndDontSave };
             CopyChildren(_animator.transform, copy.transform);
@@ -70,10 +72,15 @@ namespace DeltaInterpolator.Unity
                 string path = _bones[b].name;
                 for (Transform t = _bones[b].parent; t != null && t != _animator.transform; t = t.parent) path = t.name + "/" + path;
                 _copyBones[b] = copy.transform.Find(path);
-                if (_copyBones[b] == null) throw new InvalidOperationException($"{_animator.name}: bone {path} is not under the Animator's transform; expected every mapped bone below it");
+                if (_copyBones[b] != null) continue;
+                UnityEngine.Object.Destroy(copy);
+                _unavailable = true;
+                Debug.LogWarning($"{_animator.name}: humanoid clip targets are not checked against AnimationClip.SampleAnimation: bone {_bones[b].name} is not below the Animator's transform; expected every mapped bone below it", _animator);
+                return false;
             }
 
             _copy = copy;
+            return true;
         }
 
         private static void CopyChildren(Transform from, Transform to)

@@ -23,9 +23,11 @@ namespace DeltaInterpolator.Core.Playback
     /// row it says so once (<see cref="Observe"/> returns the message).
     /// </summary>
     /// <remarks>
-    /// Only directions are compared: how an engine scales root motion with the character does not change its frame.
-    /// Frames where the character moves slower than <see cref="MinimumSpeed"/>, or faces so close to the world's axes
-    /// that both frames give the same direction within <see cref="ToleranceDegrees"/>, are no evidence. Allocation-free
+    /// Directions decide the frame: how an engine scales root motion with the character does not change its frame. The
+    /// scale itself (<see cref="Scale"/>: applied speed ÷ stream speed, e.g. a scaled character's) is measured in the
+    /// first <see cref="FramesOfEvidence"/> frames whose direction matches the frame in use, facing any way. Frames where
+    /// the character moves slower than <see cref="MinimumSpeed"/>, or faces so close to the world's axes that both frames
+    /// give the same direction within <see cref="ToleranceDegrees"/>, are no evidence for the frame. Allocation-free
     /// except for the one message; main thread only.
     /// </remarks>
     public sealed class RootMotionFrameCheck
@@ -45,6 +47,8 @@ namespace DeltaInterpolator.Core.Playback
         private int _agreeing;
         private int _neither;
         private bool _told;
+        private double _ratios;
+        private int _ratioCount;
 
         /// <summary>The frame used until the evidence decides (<see cref="Frame"/>).</summary>
         public RootMotionFrameCheck(RootVelocityFrame assumed = RootVelocityFrame.Local)
@@ -57,6 +61,9 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>True once <see cref="FramesOfEvidence"/> frames in a row matched <see cref="Frame"/> and not the other, or after <see cref="Assume"/>.</summary>
         public bool Decided { get; private set; }
+
+        /// <summary>How much faster the engine moves the character than the stream's velocity says (1 until measured).</summary>
+        public double Scale { get; private set; } = 1.0;
 
         /// <summary>True once <see cref="FramesOfEvidence"/> frames in a row matched neither frame (said once by <see cref="Observe"/>).</summary>
         public bool NeitherMatched => _told;
@@ -77,6 +84,12 @@ namespace DeltaInterpolator.Core.Playback
             double cosLocal = Vector3D.Dot(local, appliedVelocity) / (local.Length * appliedSpeed);
             double cosWorld = Vector3D.Dot(streamVelocity, appliedVelocity) / (streamSpeed * appliedSpeed);
             bool localMatches = cosLocal >= CosTolerance, worldMatches = cosWorld >= CosTolerance;
+            if (_ratioCount < FramesOfEvidence && (Frame == RootVelocityFrame.Local ? localMatches : worldMatches))
+            {
+                _ratios += appliedSpeed / streamSpeed;
+                if (++_ratioCount == FramesOfEvidence) Scale = _ratios / FramesOfEvidence;
+            }
+
             if (localMatches && worldMatches) return null;   // facing along the world's axes: both frames agree
             if (!localMatches && !worldMatches)
             {
@@ -93,6 +106,8 @@ namespace DeltaInterpolator.Core.Playback
             _candidate = matched;
             if (++_agreeing >= FramesOfEvidence && !Decided)
             {
+                // A frame other than the one assumed: its scale is measured again, in its own frames.
+                if (matched != Frame) { _ratios = 0; _ratioCount = 0; Scale = 1.0; }
                 Frame = matched;
                 Decided = true;
             }
@@ -109,11 +124,11 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>A velocity on the stream (in <see cref="Frame"/>) in the world, for a character at <paramref name="rotation"/>.</summary>
         public Vector3D ToWorld(Vector3D streamVelocity, QuaternionD rotation) =>
-            Frame == RootVelocityFrame.Local ? Quaternions.Apply(rotation, streamVelocity) : streamVelocity;
+            Scale * (Frame == RootVelocityFrame.Local ? Quaternions.Apply(rotation, streamVelocity) : streamVelocity);
 
         /// <summary>A world velocity as the stream takes it (in <see cref="Frame"/>), for a character at <paramref name="rotation"/>.</summary>
         public Vector3D ToStream(Vector3D worldVelocity, QuaternionD rotation) =>
-            Frame == RootVelocityFrame.Local ? Quaternions.Apply(Quaternions.Inverse(rotation), worldVelocity) : worldVelocity;
+            (1.0 / Scale) * (Frame == RootVelocityFrame.Local ? Quaternions.Apply(Quaternions.Inverse(rotation), worldVelocity) : worldVelocity);
 
         private static double Degrees(double cos) => Math.Acos(Math.Max(-1.0, Math.Min(1.0, cos))) * 180.0 / Math.PI;
     }

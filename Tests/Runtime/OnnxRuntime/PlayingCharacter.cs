@@ -36,6 +36,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private RootVelocityFrame _engineFrame;
         private Vector3D _controllerVelocity;     // the controller's root motion, in the character's frame
         private QuaternionD _appliedTurn = QuaternionD.Identity;
+        private double _engineScale = 1.0;
         private Vector3D _streamVelocity;         // what the job read off the stream last frame
         private Vector3D _appliedVelocity;        // what the Animator applied last frame (world)
 
@@ -79,10 +80,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// root bone in place and moves the character at <paramref name="controllerVelocity"/> (its own frame, per second);
         /// the engine puts the velocity on the stream in <paramref name="engineFrame"/> and applies it in that frame.
         /// <paramref name="appliedTurnDegrees"/> turns what it applies about the vertical, as a script changing root
-        /// motion after the controller would (0: none).
+        /// motion after the controller would (0: none); <paramref name="engineScale"/> multiplies it, as an engine scaling
+        /// root motion with the character would (1: none).
         /// </summary>
-        public void PlayWithRootMotion(RootFrame place, Vector3D controllerVelocity, RootVelocityFrame engineFrame, double appliedTurnDegrees = 0)
+        public void PlayWithRootMotion(RootFrame place, Vector3D controllerVelocity, RootVelocityFrame engineFrame, double appliedTurnDegrees = 0, double engineScale = 1)
         {
+            _engineScale = engineScale;
             _place = PlaceOf(place);
             _rootMotion = true;
             _controllerVelocity = controllerVelocity;
@@ -128,7 +131,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Vector3D controller = local ? _controllerVelocity : Quaternions.Apply(place.Rotation, _controllerVelocity);
             var transition = new Vector3D(frame.RootVelocityX, frame.RootVelocityY, frame.RootVelocityZ);
             Vector3D stream = frame.RootMotion ? RootMotion.BlendVelocity(frame.Weight, transition, controller) : controller;
-            Vector3D applied = Quaternions.Apply(_appliedTurn, local ? Quaternions.Apply(place.Rotation, stream) : stream);
+            Vector3D applied = _engineScale * Quaternions.Apply(_appliedTurn, local ? Quaternions.Apply(place.Rotation, stream) : stream);
             _place = PlaceOf(new RootFrame(place.Position + deltaTime * applied, place.Rotation, place.Scale));
             _streamVelocity = controller;
             _appliedVelocity = applied;

@@ -15,8 +15,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// The frame of the stream's root velocity (Unity's <c>AnimationStream.velocity</c>, whose C# source names none):
     /// a character turned 90° walks with root motion on while the engine puts its velocity on the stream in the
     /// character's frame (what Unity's Kinematica writes) or in the world's, frame by frame (<see cref="PlayingCharacter"/>
-    /// simulates the Animator applying it). In both, the run-time check (<see cref="RootMotionFrameCheck"/>) picks the
-    /// engine's frame before the request, and the character then travels toward its target, not sideways.
+    /// simulates the Animator applying it), scaling it or not. In each, the run-time check (<see cref="RootMotionFrameCheck"/>)
+    /// picks the engine's frame and scale before the request, and the character then travels toward its target, not sideways.
     /// </summary>
     [TestFixture]
     public sealed class RootMotionFrameTests
@@ -26,14 +26,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private const double Ahead = 2.0;          // metres
         private const double Seconds = 1.0;
 
-        [TestCase(RootVelocityFrame.Local)]
-        [TestCase(RootVelocityFrame.World)]
-        public void ACharacterTurned90DegreesTravelsTowardItsTargetInEitherEngineFrame(RootVelocityFrame engine)
+        [TestCase(RootVelocityFrame.Local, 1.0)]
+        [TestCase(RootVelocityFrame.World, 1.0)]
+        [TestCase(RootVelocityFrame.Local, 1.7)]
+        [TestCase(RootVelocityFrame.World, 0.6)]
+        public void ACharacterTurned90DegreesTravelsTowardItsTargetInEitherEngineFrame(RootVelocityFrame engine, double engineScale)
         {
-            using var loop = new Loop(engine, 0.0);
+            using var loop = new Loop(engine, 0.0, engineScale);
             loop.PlayUntil(1.0);
             Assert.That(loop.Character.RootMotionFrame.Decided, Is.True, "five frames walking turned 90° decide the frame");
             Assert.That(loop.Character.RootMotionFrame.Frame, Is.EqualTo(engine));
+            Assert.That(loop.Character.RootMotionFrame.Scale, Is.EqualTo(engineScale).Within(1e-9));
             Assert.That(loop.Character.RootMotionWarnings, Is.Empty);
 
             RootFrame start = loop.Character.Place;
@@ -114,7 +117,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             private readonly SyntheticClip _clip;
             private readonly TransitionScheduler _scheduler;
 
-            public Loop(RootVelocityFrame engine, double appliedTurnDegrees)
+            public Loop(RootVelocityFrame engine, double appliedTurnDegrees, double engineScale = 1.0)
             {
                 Inbetweener model = OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true);
                 _scheduler = new MainThreadScheduler(model);
@@ -124,7 +127,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Character = new PlayingCharacter(map, _scheduler, new PlaybackSettings { BlendInSeconds = 0.1, BlendOutSeconds = 0.2, SlerpOnly = true }, InPlace);
                 Character.Player.TransitionCompleted += e => Completions.Add(e);
                 var turned = new RootFrame(new Vector3D(3.0, 0.0, -1.0), Quaternions.FromAxisAngle(Vector3D.UnitY, Math.PI / 2), 1.0);
-                Character.PlayWithRootMotion(turned, new Vector3D(0, 0, Speed), engine, appliedTurnDegrees);
+                Character.PlayWithRootMotion(turned, new Vector3D(0, 0, Speed), engine, appliedTurnDegrees, engineScale);
             }
 
             public PlayingCharacter Character { get; }
