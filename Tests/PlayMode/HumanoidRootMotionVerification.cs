@@ -37,38 +37,21 @@ namespace DeltaInterpolator.Tests.PlayMode
         private const float Timeout = 5.0f;              // seconds after the request before the test gives up
         private const float PoseToleranceDegrees = 1.0f; // arrival pose vs. SampleAnimation, per bone (float rounding, muscle round trip)
         private const float SidewaysShare = 0.25f;       // travel across the facing, as a share of travel along it
+        private const float HandReach = 0.02f;           // metres: the hand is on its IK goal
 
         [UnityTest]
         public IEnumerator AHumanoidBvhFigureTurned90DegreesTravelsTowardItsTargetShowsTheSampledPoseAndDoesNotSnap()
         {
-            string folder = AssetDatabase.GUIDToAssetPath(AssetDatabase.CreateFolder("Assets", "DeltaInterpolator Verification"));
-            var created = new List<Object>();
+            var rig = Rig.Import();
             try
             {
-                string bvh = folder + "/" + BvhFile;
-                File.Copy(Path.GetFullPath("Packages/" + Package + "/Samples~/Demo/" + BvhFile), Path.GetFullPath(bvh));
-                AssetDatabase.ImportAsset(bvh);
-                GameObject figure = AssetDatabase.LoadAssetAtPath<GameObject>(bvh);
-                Assert.That(figure != null, Is.True, bvh + " is imported as a figure by the package's BVH importer");
-                AnimationClip? clip = null;
-                Avatar? avatar = null;
-                foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(bvh))
-                {
-                    if (o is AnimationClip c) clip = c;
-                    if (o is Avatar a) avatar = a;
-                }
-
-                Assert.That(clip != null && avatar != null && avatar.isHuman, Is.True, "the CMU figure imports as a humanoid with a clip");
-                InbetweenerSettings settings = Settings(folder, clip!);
-                AnimatorController controller = AnimatorController.CreateAnimatorControllerAtPathWithClip(folder + "/Controller.controller", clip);
-
                 // The character, its controller's twin (the same controller, no transitions: the controller's own pose and
                 // motion each frame) and a hidden copy the clip is sampled onto, all turned 90° and started together.
-                GameObject character = Figure(figure!, avatar!, controller, created, visible: true);
-                GameObject twin = Figure(figure!, avatar!, controller, created, visible: false);
-                GameObject sampled = Figure(figure!, avatar!, null, created, visible: false);
+                GameObject character = rig.Figure(rig.Controller, visible: true, rootMotion: true);
+                GameObject twin = rig.Figure(rig.Controller, visible: false, rootMotion: true);
+                GameObject sampled = rig.Figure(null, visible: false, rootMotion: true);
                 var inbetweener = character.AddComponent<MotionInbetweener>();
-                inbetweener.Settings = settings;
+                inbetweener.Settings = rig.Settings;
                 int arrivalFrame = -1;
                 inbetweener.TransitionCompleted += e => { if (e.ReachedTarget) arrivalFrame = Time.frameCount; };
 
@@ -80,7 +63,7 @@ namespace DeltaInterpolator.Tests.PlayMode
                 Transform[] sampledBones = Counterparts(bones, character.transform, sampled.transform);
                 Vector3 from = character.transform.position;
                 Vector3 facing = character.transform.rotation * new Vector3(0f, 0f, 1f);
-                inbetweener.RequestTransition(clip!, TargetClipTime);
+                inbetweener.RequestTransition(rig.Clip, TargetClipTime);
                 double requested = Time.timeAsDouble;
 
                 // Until the arrival frame has been shown (the coroutine runs after Update, before the frame's animation).
@@ -96,7 +79,7 @@ namespace DeltaInterpolator.Tests.PlayMode
                 Assert.That(along, Is.GreaterThan(0f), "the character travels along its facing, toward its target");
                 Assert.That(across, Is.LessThanOrEqualTo(SidewaysShare * along), "the character is not pushed sideways (the stream velocity's frame)");
 
-                clip!.SampleAnimation(sampled, TargetClipTime);
+                rig.Clip.SampleAnimation(sampled, TargetClipTime);
                 for (int b = 1; b < bones.Count; b++)
                 {
                     float off = Degrees(bones[b].localRotation, sampledBones[b].localRotation);
@@ -115,7 +98,8 @@ namespace DeltaInterpolator.Tests.PlayMode
                     lastTwin[b] = twinBones[b].localRotation;
                 }
 
-                double blendOutEnd = Time.timeAsDouble + settings.BlendOutSeconds + 0.1;
+                float blendOut = rig.Settings.BlendOutSeconds;
+                double blendOutEnd = Time.timeAsDouble + blendOut + 0.1;
                 while (Time.timeAsDouble < blendOutEnd)
                 {
                     yield return null;
@@ -124,7 +108,7 @@ namespace DeltaInterpolator.Tests.PlayMode
                     {
                         float shown = Degrees(lastShown[b], bones[b].localRotation);
                         float own = Degrees(lastTwin[b], twinBones[b].localRotation);
-                        float bound = 1.25f * (own + 1.5f * gap[b] * step / settings.BlendOutSeconds) + 0.5f;
+                        float bound = 1.25f * (own + 1.5f * gap[b] * step / blendOut) + 0.5f;
                         Assert.That(shown, Is.LessThanOrEqualTo(bound), $"{bones[b].name} turned {shown:F2}° in one step of the blend-out");
                         lastShown[b] = bones[b].localRotation;
                         lastTwin[b] = twinBones[b].localRotation;
@@ -135,38 +119,133 @@ namespace DeltaInterpolator.Tests.PlayMode
             }
             finally
             {
-                foreach (Object o in created) if (o != null) Object.DestroyImmediate(o);
-                AssetDatabase.DeleteAsset(folder);
+                rig.Dispose();
             }
         }
 
-        // The settings the Demo uses: the shipped model, Humanoid, CMU joint names, the clip's first frame (a T-pose) as reference.
-        private static InbetweenerSettings Settings(string folder, AnimationClip clip)
+        /// <summary>
+        /// What <c>unity-verification.md</c> says of the controller's IK pass: it belongs to the Animator Controller's output,
+        /// under the transition layer, so an <c>OnAnimatorIK</c> hand goal is reached before a transition, not while the
+        /// layer's weight is 1 (the transition's pose is shown), and again after the blend-out. A failure here means that
+        /// page is wrong about where Unity solves the controller's IK.
+        /// </summary>
+        [UnityTest]
+        public IEnumerator TheControllersIkPassIsUnderTheTransitionLayer()
         {
-            var settings = ScriptableObject.CreateInstance<InbetweenerSettings>();
-            var s = new SerializedObject(settings);
-            s.FindProperty("model").objectReferenceValue = ShippedModelAssets.Create(folder + "/Model.asset");
-            s.FindProperty("rig").enumValueIndex = (int)CharacterRigKind.Humanoid;
-            s.FindProperty("jointMap").enumValueIndex = (int)BuiltInJointMap.Cmu;
-            s.FindProperty("referencePose").enumValueIndex = (int)ReferencePoseSource.ClipFrame;
-            s.FindProperty("referenceClip").objectReferenceValue = clip;
-            s.FindProperty("referenceClipTime").floatValue = 0f;
-            s.ApplyModifiedPropertiesWithoutUndo();
-            return settings;
+            var rig = Rig.Import();
+            try
+            {
+                AnimatorControllerLayer[] layers = rig.Controller.layers;
+                layers[0].iKPass = true;
+                rig.Controller.layers = layers;
+                GameObject character = rig.Figure(rig.Controller, visible: true, rootMotion: false);
+                var goal = character.AddComponent<HandGoal>();
+                var inbetweener = character.AddComponent<MotionInbetweener>();
+                inbetweener.Settings = rig.Settings;
+                int arrivalFrame = -1;
+                inbetweener.TransitionCompleted += e => { if (e.ReachedTarget) arrivalFrame = Time.frameCount; };
+                Transform hand = character.GetComponent<Animator>().GetBoneTransform(HumanBodyBones.LeftHand);
+
+                double start = Time.timeAsDouble;
+                while (Time.timeAsDouble - start < WalkBeforeRequest) yield return null;
+                // A goal a little in front of where the hand is: within reach while the character walks in place.
+                goal.Goal = hand.position + character.transform.rotation * new Vector3(0f, 0f, 0.1f);
+                goal.Active = true;
+                for (int i = 0; i < 3; i++) yield return null;
+                Assert.That(Distance(hand.position, goal.Goal), Is.LessThan(HandReach), "the IK pass puts the hand on its goal before a transition");
+
+                inbetweener.RequestTransition(rig.Clip, TargetClipTime);
+                double requested = Time.timeAsDouble;
+                while (arrivalFrame < 0 || Time.frameCount <= arrivalFrame)
+                {
+                    Assert.That(Time.timeAsDouble - requested, Is.LessThan(Timeout), "the transition arrives");
+                    yield return null;
+                }
+
+                Assert.That(Distance(hand.position, goal.Goal), Is.GreaterThan(HandReach), "at weight 1 the transition's pose is shown, not the controller's IK");
+                double end = Time.timeAsDouble + rig.Settings.BlendOutSeconds + 0.2;
+                while (Time.timeAsDouble < end) yield return null;
+                Assert.That(Distance(hand.position, goal.Goal), Is.LessThan(HandReach), "after the blend-out the controller's IK shows again");
+            }
+            finally
+            {
+                rig.Dispose();
+            }
         }
 
-        private static GameObject Figure(GameObject figure, Avatar avatar, RuntimeAnimatorController? controller, List<Object> created, bool visible)
+        /// <summary>The imported figure, its clip and avatar, Demo-like settings and a controller, in a temporary folder.</summary>
+        private sealed class Rig : IDisposable
         {
-            GameObject go = Object.Instantiate(figure);
-            created.Add(go);
-            go.transform.rotation = Quaternion.Euler(0f, 90f, 0f);
-            Animator animator = go.GetComponent<Animator>();
-            if (animator == null) animator = go.AddComponent<Animator>();
-            animator.avatar = avatar;
-            animator.runtimeAnimatorController = controller;
-            animator.applyRootMotion = true;
-            if (!visible) foreach (Renderer r in go.transform.GetComponentsInChildren<Renderer>(true)) r.enabled = false;
-            return go;
+            private readonly List<Object> _created = new List<Object>();
+            private string _folder = "";
+            private GameObject _figure = null!;
+            private Avatar _avatar = null!;
+
+            public AnimationClip Clip { get; private set; } = null!;
+
+            public InbetweenerSettings Settings { get; private set; } = null!;
+
+            public AnimatorController Controller { get; private set; } = null!;
+
+            /// <summary>Imports the Demo's walk with the package's BVH importer into Assets/DeltaInterpolator Verification.</summary>
+            public static Rig Import()
+            {
+                var rig = new Rig();
+                rig._folder = AssetDatabase.GUIDToAssetPath(AssetDatabase.CreateFolder("Assets", "DeltaInterpolator Verification"));
+                string bvh = rig._folder + "/" + BvhFile;
+                File.Copy(Path.GetFullPath("Packages/" + Package + "/Samples~/Demo/" + BvhFile), Path.GetFullPath(bvh));
+                AssetDatabase.ImportAsset(bvh);
+                GameObject figure = AssetDatabase.LoadAssetAtPath<GameObject>(bvh);
+                Assert.That(figure != null, Is.True, bvh + " is imported as a figure by the package's BVH importer");
+                rig._figure = figure!;
+                foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(bvh))
+                {
+                    if (o is AnimationClip c) rig.Clip = c;
+                    if (o is Avatar a) rig._avatar = a;
+                }
+
+                Assert.That(rig.Clip != null && rig._avatar != null && rig._avatar.isHuman, Is.True, "the CMU figure imports as a humanoid with a clip");
+                rig.Settings = DemoSettings(rig._folder, rig.Clip!);
+                rig._created.Add(rig.Settings);
+                rig.Controller = AnimatorController.CreateAnimatorControllerAtPathWithClip(rig._folder + "/Controller.controller", rig.Clip);
+                return rig;
+            }
+
+            /// <summary>An instance of the figure turned 90° from the world's +Z, on <paramref name="controller"/> (none: still).</summary>
+            public GameObject Figure(RuntimeAnimatorController? controller, bool visible, bool rootMotion)
+            {
+                GameObject go = Object.Instantiate(_figure);
+                _created.Add(go);
+                go.transform.rotation = Quaternion.Euler(0f, 90f, 0f);
+                Animator animator = go.GetComponent<Animator>();
+                if (animator == null) animator = go.AddComponent<Animator>();
+                animator.avatar = _avatar;
+                animator.runtimeAnimatorController = controller;
+                animator.applyRootMotion = rootMotion;
+                if (!visible) foreach (Renderer r in go.transform.GetComponentsInChildren<Renderer>(true)) r.enabled = false;
+                return go;
+            }
+
+            public void Dispose()
+            {
+                foreach (Object o in _created) if (o != null) Object.DestroyImmediate(o);
+                if (_folder.Length > 0) AssetDatabase.DeleteAsset(_folder);
+            }
+
+            // The settings the Demo uses: the shipped model, Humanoid, CMU joint names, the clip's first frame (a T-pose) as reference.
+            private static InbetweenerSettings DemoSettings(string folder, AnimationClip clip)
+            {
+                var settings = ScriptableObject.CreateInstance<InbetweenerSettings>();
+                var s = new SerializedObject(settings);
+                s.FindProperty("model").objectReferenceValue = ShippedModelAssets.Create(folder + "/Model.asset");
+                s.FindProperty("rig").enumValueIndex = (int)CharacterRigKind.Humanoid;
+                s.FindProperty("jointMap").enumValueIndex = (int)BuiltInJointMap.Cmu;
+                s.FindProperty("referencePose").enumValueIndex = (int)ReferencePoseSource.ClipFrame;
+                s.FindProperty("referenceClip").objectReferenceValue = clip;
+                s.FindProperty("referenceClipTime").floatValue = 0f;
+                s.ApplyModifiedPropertiesWithoutUndo();
+                return settings;
+            }
         }
 
         // The same bones, by their path under the figure's root, in another instance of the figure.
@@ -182,6 +261,12 @@ namespace DeltaInterpolator.Tests.PlayMode
             }
 
             return found;
+        }
+
+        private static float Distance(Vector3 a, Vector3 b)
+        {
+            Vector3 d = a - b;
+            return (float)Math.Sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         }
 
         private static float Degrees(Quaternion a, Quaternion b)

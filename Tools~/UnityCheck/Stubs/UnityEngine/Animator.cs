@@ -12,6 +12,15 @@ namespace UnityEngine
     }
 
     // source: unity:Modules/Animation/ScriptBindings/Animator.bindings.cs
+    public enum AvatarIKGoal
+    {
+        LeftFoot = 0,
+        RightFoot = 1,
+        LeftHand = 2,
+        RightHand = 3,
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/Animator.bindings.cs
     public partial class Animator : Behaviour
     {
         public bool isHuman => throw null!;
@@ -27,5 +36,9 @@ namespace UnityEngine
         public RuntimeAnimatorController runtimeAnimatorController { get => throw null!; set => throw null!; }
 
         public Transform GetBoneTransform(HumanBodyBones humanBoneId) => throw null!;
+
+        public void SetIKPosition(AvatarIKGoal goal, Vector3 goalPosition) => throw null!;
+
+        public void SetIKPositionWeight(AvatarIKGoal goal, float value) => throw null!;
     }
 }

@@ -9,6 +9,8 @@ namespace UnityEngine
 
         public Vector3(float x, float y, float z) => throw null!;
 
+        public static Vector3 operator +(Vector3 a, Vector3 b) => throw null!;
+
         public static Vector3 operator -(Vector3 a, Vector3 b) => throw null!;
     }
 }
