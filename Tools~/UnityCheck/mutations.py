@@ -115,6 +115,10 @@ MUTATIONS = [
      lambda r: write(r, 'Editor/MutationMessage.cs', 'namespace DeltaInterpolator.Editor { internal static class MutationMessage { '
                      'internal static string Hint() => "Assign a model (Assets → Create → Δ-Interpolator → No Such Asset)."; } }\n'),
      'rule', r'^menu: DeltaInterpolator\.Editor: DeltaInterpolator\.Editor\.MutationMessage\.Hint says "Assets → Create → Δ-Interpolator → No Such Asset"'),
+    ('a menu a tooltip names with > but the package lacks', 'editor', 'DeltaInterpolator.Editor',
+     lambda r: write(r, 'Editor/MutationMessage.cs', 'namespace DeltaInterpolator.Editor { internal static class MutationMessage { '
+                     '[UnityEngine.Tooltip("The model (Assets > Create > Δ-Interpolator > No Such Asset).")] internal static int Model; } }\n'),
+     'rule', r'^menu: DeltaInterpolator\.Editor: DeltaInterpolator\.Editor\.MutationMessage\.Model says "Assets > Create > Δ-Interpolator > No Such Asset"'),
 ]
 
 

@@ -17,7 +17,8 @@ using System.Text.RegularExpressions;
 //   menu     every menu path the docs name (*Add Component → …*, *Assets → Create → …*, *Window → …*)
 //            exists as an AddComponentMenu/CreateAssetMenu/MenuItem attribute (or, for Add Component, as
 //            the nicified name of a MonoBehaviour); so does every menu path the package's own messages name
-//            (string literals in its compiled code: "… (Assets → Create → Δ-Interpolator → …)");
+//            (string literals in its compiled code and string arguments of its attributes such as [Tooltip],
+//            with → or > between the steps: "… (Assets > Create > Δ-Interpolator > …)");
 //   package  package.json's documentationUrl/changelogUrl/licensesUrl are absolute http(s) links or absent;
 //   friends  [InternalsVisibleTo] of DeltaInterpolator.Core names only test assemblies (what the Editor-only
 //            assemblies and the tools use of Core is its public API); of another package assembly, only test
@@ -232,9 +233,11 @@ static class Program
     static readonly string[] UnitySubMenus = { "Window → Animation", "Window → General" };
     // A menu path inside a message: a top-level menu (or the Project window's Create menu, which is Assets → Create, or
     // Unity's Project Settings window) and its items, up to what ends a phrase in a sentence.
-    static readonly Regex MessageMenuPath = new(@"\b((?:Add Component|Assets|Create|Window|GameObject|Component|Tools|Edit|Project Settings) → [^""().;:,\n]+)");
+    // Messages write the steps with → or with > ("Assets > Create > …").
+    static readonly Regex MessageMenuPath = new(@"\b((?:Add Component|Assets|Create|Window|GameObject|Component|Tools|Edit|File|Project Settings) (?:→|>) [^""().;:,\n]+)");
+    static readonly Regex MessageMenuStep = new(@"\s+(?:→|>)\s+");
     // Unity's own windows the messages walk through.
-    static readonly string[] UnityOwnMessageMenus = { "Window → Package Manager", "Project Settings", "Edit → Project Settings" };
+    static readonly string[] UnityOwnMessageMenus = { "Window/Package Manager", "Project Settings", "Edit/Project Settings", "File" };
 
     static void CheckMenus(List<Type> types, List<string> docs, string root)
     {
@@ -281,13 +284,16 @@ static class Program
 
         // The package's own messages (dialogs, Console lines, exceptions, help boxes): a menu they send the user to must exist.
         foreach (var t in types)
-            foreach (var m in t.GetMethods(All).Cast<MethodBase>().Concat(t.GetConstructors(All)))
-                foreach (var text in StringLiterals(m))
+        {
+            var members = t.GetMembers(All);
+            var texts = members.OfType<MethodBase>().SelectMany(m => StringLiterals(m).Select(text => (m.Name, text)))
+                .Concat(members.Append(t).SelectMany(m => AttributeStrings(m).Select(text => (m.Name, text))));
+            foreach (var (member, text) in texts)
                     foreach (Match match in MessageMenuPath.Matches(text))
                     {
                         string said = match.Groups[1].Value.Trim().TrimEnd('…').Trim();
-                        if (UnityOwnMessageMenus.Any(u => said.StartsWith(u))) continue;
-                        var parts = said.Split(" → ").Select(p => p.Trim().TrimEnd('…').Trim()).Where(p => p.Length > 0).ToArray();
+                        var parts = MessageMenuStep.Split(said).Select(p => p.Trim().TrimEnd('…').Trim()).Where(p => p.Length > 0).ToArray();
+                        if (UnityOwnMessageMenus.Any(u => string.Join("/", parts).StartsWith(u))) continue;
                         if (parts[0] == "Create") parts = new[] { "Assets" }.Concat(parts).ToArray();
                         string rest = string.Join("/", parts.Skip(1));
                         bool ok;
@@ -299,8 +305,20 @@ static class Program
                             ok = menuItems.Any(p => p == full || p.StartsWith(full + "/") || p.StartsWith(full + " ("))
                                  || (parts.Length > 2 && parts[1] == "Create" && createAsset.Any(c => c == string.Join("/", parts.Skip(2)) || c.StartsWith(string.Join("/", parts.Skip(2)) + "/")));
                         }
-                        if (!ok) Violations.Add($"menu: {t.Assembly.GetName().Name}: {t.FullName}.{m.Name} says \"{said}\", a menu the package does not declare (MenuItem: {string.Join(", ", menuItems)}; CreateAssetMenu: {string.Join(", ", createAsset)})");
+                        if (!ok) Violations.Add($"menu: {t.Assembly.GetName().Name}: {t.FullName}.{member} says \"{said}\", a menu the package does not declare (MenuItem: {string.Join(", ", menuItems)}; CreateAssetMenu: {string.Join(", ", createAsset)})");
                     }
+        }
+    }
+
+    // The string arguments of a member's attributes ([Tooltip("…")], [HelpURL], …): messages too.
+    static IEnumerable<string> AttributeStrings(MemberInfo m)
+    {
+        IList<CustomAttributeData> attributes;
+        try { attributes = m.GetCustomAttributesData(); }
+        catch (Exception) { yield break; }
+        foreach (var a in attributes)
+            foreach (var arg in a.ConstructorArguments.Concat(a.NamedArguments.Select(n => n.TypedValue)))
+                if (arg.Value is string text && (text.Contains('→') || text.Contains(" > "))) yield return text;
     }
 
     // The string literals a method loads (ldstr, 0x72, with a user-string token 0x70xxxxxx); a byte pattern that only
@@ -317,7 +335,7 @@ static class Program
             string? s = null;
             try { s = m.Module.ResolveString(BitConverter.ToInt32(il, i + 1)); }
             catch (Exception) { }
-            if (s != null && s.Contains('→')) yield return s;
+            if (s != null && (s.Contains('→') || s.Contains(" > "))) yield return s;
         }
     }
 
