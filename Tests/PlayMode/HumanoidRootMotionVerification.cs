@@ -19,10 +19,11 @@ namespace DeltaInterpolator.Tests.PlayMode
     /// <summary>
     /// What the engine does with the package, checked in the real engine (Test Runner → PlayMode; steps in
     /// <c>Documentation~/unity-verification.md</c>): the package's BVH importer turns a Demo sample clip into a humanoid
-    /// figure, which walks with root motion on, turned 90° from the world's +Z, and is sent to a later frame of its clip.
-    /// It must travel along its own facing (the frame of <c>AnimationStream.velocity</c>), show on arrival the pose
-    /// <c>AnimationClip.SampleAnimation</c> gives (humanoid targets read off the playable graph's input stream), and not
-    /// snap when it blends back to the controller. Nothing is logged (no root-motion frame or target warning).
+    /// figure, which walks with root motion on, turned 90° from the world's +Z. Sent to a later frame of its clip, it must
+    /// show on arrival the pose <c>AnimationClip.SampleAnimation</c> gives (humanoid targets read off the playable graph's
+    /// input stream) and not snap when it blends back to the controller; sent to a pose 1 m ahead, it must travel there
+    /// along its facing, not sideways (the frame of <c>AnimationStream.velocity</c>). Nothing is logged (no root-motion
+    /// frame or target warning).
     /// </summary>
     /// <remarks>
     /// Editor only (it imports the sample's <c>.bvh</c> into a temporary folder under Assets, removed afterwards); the Unity
@@ -36,7 +37,9 @@ namespace DeltaInterpolator.Tests.PlayMode
         private const float TargetClipTime = 3.0f;       // the frame of the clip the transition goes to
         private const float Timeout = 5.0f;              // seconds after the request before the test gives up
         private const float PoseToleranceDegrees = 1.0f; // arrival pose vs. SampleAnimation, per bone (float rounding, muscle round trip)
-        private const float SidewaysShare = 0.25f;       // travel across the facing, as a share of travel along it
+        private const float Ahead = 1.0f;                // metres: the pose target in front of the character
+        private const float Reach = 0.1f;                // metres: the hips on the pose target (horizontally) on arrival
+        private const float Sideways = 0.1f;             // metres the character may stray across its facing meanwhile
         private const float HandReach = 0.02f;           // metres: the hand is on its IK goal
 
         [UnityTest]
@@ -61,23 +64,15 @@ namespace DeltaInterpolator.Tests.PlayMode
                 IReadOnlyList<Transform> bones = inbetweener.Bones;
                 Transform[] twinBones = Counterparts(bones, character.transform, twin.transform);
                 Transform[] sampledBones = Counterparts(bones, character.transform, sampled.transform);
-                Vector3 from = character.transform.position;
-                Vector3 facing = character.transform.rotation * new Vector3(0f, 0f, 1f);
                 inbetweener.RequestTransition(rig.Clip, TargetClipTime);
                 double requested = Time.timeAsDouble;
 
                 // Until the arrival frame has been shown (the coroutine runs after Update, before the frame's animation).
                 while (arrivalFrame < 0 || Time.frameCount <= arrivalFrame)
                 {
-                    Assert.That(Time.timeAsDouble - requested, Is.LessThan(Timeout), "the transition arrives");
+                    Assert.That(Time.timeAsDouble - requested, Is.LessThan(Timeout), "the clip transition arrives");
                     yield return null;
                 }
-
-                Vector3 moved = character.transform.position - from;
-                float along = moved.x * facing.x + moved.z * facing.z;
-                float across = Math.Abs(moved.x * facing.z - moved.z * facing.x);
-                Assert.That(along, Is.GreaterThan(0f), "the character travels along its facing, toward its target");
-                Assert.That(across, Is.LessThanOrEqualTo(SidewaysShare * along), "the character is not pushed sideways (the stream velocity's frame)");
 
                 rig.Clip.SampleAnimation(sampled, TargetClipTime);
                 for (int b = 1; b < bones.Count; b++)
@@ -115,6 +110,34 @@ namespace DeltaInterpolator.Tests.PlayMode
                     }
                 }
 
+                // A pose 1 m ahead of the hips (the root bone's position is given where the character stands now): the
+                // character walks there along its facing (+X in the world), not sideways, whatever frame the stream's
+                // velocity is in, once the run-time check has seen the controller walk on its own.
+                double walkOn = Time.timeAsDouble + WalkBeforeRequest;
+                while (Time.timeAsDouble < walkOn) yield return null;
+                var rotations = new Quaternion[bones.Count];
+                for (int b = 0; b < bones.Count; b++) rotations[b] = sampledBones[b].localRotation;
+                Vector3 from = character.transform.position;
+                Quaternion facing = character.transform.rotation;
+                Vector3 forward = facing * new Vector3(0f, 0f, 1f);
+                Vector3 targetLocal = bones[0].localPosition + new Vector3(0f, 0f, Ahead);
+                Vector3 target = from + facing * targetLocal;
+                arrivalFrame = -1;
+                inbetweener.RequestTransition(targetLocal, rotations);
+                requested = Time.timeAsDouble;
+                float strayed = 0f;
+                while (arrivalFrame < 0 || Time.frameCount <= arrivalFrame)
+                {
+                    Assert.That(Time.timeAsDouble - requested, Is.LessThan(Timeout), "the pose transition arrives");
+                    yield return null;
+                    Vector3 moved = character.transform.position - from;
+                    strayed = Math.Max(strayed, Math.Abs(moved.x * forward.z - moved.z * forward.x));
+                }
+
+                Vector3 miss = bones[0].position - target;
+                float missed = (float)Math.Sqrt(miss.x * miss.x + miss.z * miss.z);
+                Assert.That(missed, Is.LessThanOrEqualTo(Reach), "the hips arrive on the pose target 1 m ahead");
+                Assert.That(strayed, Is.LessThanOrEqualTo(Sideways), "the character travels toward its target, not sideways (the stream velocity's frame)");
                 LogAssert.NoUnexpectedReceived();
             }
             finally
