@@ -87,10 +87,11 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(worstRoot, Is.LessThan(1e-4));
         }
 
-        [Test]
-        public void ForcingYOnAZUpWorldIsRefusedNamingTheOption()
+        [TestCase("walk-z-world.bvh")]
+        [TestCase("walk-z-rest.bvh")]
+        public void ForcingYOnAZUpFileIsRefusedNamingTheOption(string file)
         {
-            string input = Write("walk-z-world.bvh", UpAxisFixtures.InZUpWorld(Walk()));
+            string input = Write(file, file == "walk-z-world.bvh" ? UpAxisFixtures.InZUpWorld(Walk()) : UpAxisFixtures.OnZUpSkeleton(Walk()));
             string output = _dir["out.bvh"];
             CliRun run = CliHarness.Run("retarget", input, "--to", "model", "--map", _dir["map.json"], "--up", "y", "--out", output, "--model", _model);
             string line = CliHarness.AssertOneErrorLine(run, "lies down");
