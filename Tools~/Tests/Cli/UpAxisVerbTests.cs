@@ -189,7 +189,8 @@ namespace DeltaInterpolator.Tests.Cli
             string input = Write("walk-y.bvh", Walk());
             CliHarness.AssertOneErrorLine(CliHarness.Run("retarget", input, "--to", "model", "--accept-reference-pose", value, "--out", _dir["a.bvh"], "--model", _model), "expected");
             CliHarness.AssertOneErrorLine(CliHarness.Run("bake", input, "--every", "10", "--accept-reference-pose", value, "--out", _dir["b.bvh"], "--model", _model), "expected");
-            Assert.That(File.Exists(_dir["a.bvh"]) || File.Exists(_dir["b.bvh"]), Is.False);
+            CliHarness.AssertOneErrorLine(CliHarness.Run("score", _dir.Path, "--every", "10", "--accept-reference-pose", value, "--json", _dir["s.json"], "--model", _model), "expected");
+            Assert.That(File.Exists(_dir["a.bvh"]) || File.Exists(_dir["b.bvh"]) || File.Exists(_dir["s.json"]), Is.False);
         }
 
         /// <summary>
