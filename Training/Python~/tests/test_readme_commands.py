@@ -16,6 +16,7 @@ takes over a minute on a quiet machine belongs marked in the README ("takes N mi
 """
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import time
@@ -197,3 +198,34 @@ def test_the_parser_reads_blocks_continuations_comments_and_data_needs():
     own = [c for c in commands if " Samples~/" in c.text]
     assert own and not any(c.needs_data for c in own), "the own-motion examples need no data set"
     assert trailing_comment("a '#b' c  # note") == ("a '#b' c", "note")
+
+
+def _flags(text: str, verb: str) -> dict:
+    """`--flag value...` pairs of a trainer command after its verb, the launcher (./Tools~/train or python3 -m
+    deltainterp) left aside."""
+    words = shlex.split(text)
+    words = words[words.index(verb) + 1:]
+    flags, name = {}, None
+    for w in words:
+        if w.startswith("--"):
+            name = w
+            flags[name] = []
+        elif name is not None:
+            flags[name].append(w)
+    return flags
+
+
+@pytest.mark.parametrize("verb,data", [("prepare", "Training/Python~/datasets/cmu.json"),
+                                       ("train", "Training/.data/cmu-train.npz")])
+def test_the_training_readme_runs_the_shipped_recipe_of_the_model_card(verb, data):
+    """Issue 30: the training README's commands for the shipped CMU model are the model card's, flag for flag
+    (its train command once trained P = 10..10 only, the shipped model 1..10)."""
+    def find(readme: str):
+        found = [c for c in parse(readme) if re.search(rf"\b{verb} --data {re.escape(data)}\b", c.text)]
+        assert found, f"{readme}: no `{verb} --data {data}` command"
+        return _flags(found[0].text, verb)
+
+    card, readme = find("Documentation~/model-card.md"), find("Training/README.md")
+    assert readme == card, f"Training/README.md's {verb} differs from the model card's: {readme} vs {card}"
+    if verb == "train":
+        assert readme["--min-past"] == ["1"], "the shipped model trains P = 1..10"
