@@ -260,6 +260,27 @@ namespace DeltaInterpolator.Tests.Cli
             Assert.That(OneLine(asWritten.Stdout), Does.Contain("up axis y: motion Y-up"));
         }
 
+        /// <summary>
+        /// A Z-up file's bake is written in the file's own world (keys unchanged), so preview shows it beside its
+        /// truth with one decision for both: drawn standing, the key frames' error zero.
+        /// </summary>
+        [Test]
+        public void AZUpBakePreviewsStandingBesideItsTruth()
+        {
+            string truth = Write("walk-z-world.bvh", UpAxisFixtures.InZUpWorld(Walk()));
+            string baked = _dir["baked.bvh"];
+            CliHarness.AssertSuccess(CliHarness.Run("bake", truth, "--every", "20", "--map", _dir["map.json"], "--feet", "off", "--out", baked, "--model", _model));
+            JointMap map = JointMap.Load(_dir["map.json"]);
+            PreviewScene scene = BvhPreview.Build(new[] { ("Ground truth", truth), ("Baked", baked) }, null, new[] { 0, 20, 40 }, true, map, UpAxis.Auto);
+            Assert.That(scene.UpAxisDescription, Does.Contain("drawn turned to Y up"));
+            double[] error = scene.ErrorPerFrame(1);
+            TestContext.WriteLine($"error at keys 0, 20, 40: {error[0]:E2}, {error[20]:E2}, {error[40]:E2}; mean between keys {scene.MeanErrorBetweenKeys(1):0.###} data units");
+            foreach (int k in new[] { 0, 20, 40 }) Assert.That(error[k], Is.LessThan(1e-3), $"key {k}");
+            double[] p = scene.Tracks[1].GlobalPositions;
+            int head = Model.IndexOf("Head");
+            Assert.That(p[3 * head + 1], Is.GreaterThan(p[1] + 10), "the baked figure stands: its head above its hips along Y");
+        }
+
         /// <summary>info says what retarget and bake would decide about the file's up axis (and --up forces it).</summary>
         [Test]
         public void InfoSaysWhatTheUpAxisIsTakenToBe()
