@@ -183,7 +183,7 @@ namespace DeltaInterpolator.Tests.Cli
         // A flag takes no value: System.CommandLine's own refusal (one line, exit 2, nothing written).
         [TestCase("maybe")]
         [TestCase("2")]
-        [TestCase("\u001b[2J")]
+        [TestCase("\u001b[2J", TestName = "{m}(ESC[2J)")] // a raw ESC in the name: filtered runs (--filter) would skip the case
         public void HostileAcceptReferencePoseValuesAreRefusedInOneLine(string value)
         {
             string input = Write("walk-y.bvh", Walk());
@@ -341,7 +341,7 @@ namespace DeltaInterpolator.Tests.Cli
         [TestCase("")]
         [TestCase("zz")]
         [TestCase("y\nz")]
-        [TestCase("\u001b[2J")]
+        [TestCase("\u001b[2J", TestName = "{m}(ESC[2J)")] // a raw ESC in the name: filtered runs (--filter) would skip the case
         public void HostileUpValuesAreRefusedInOneLine(string value)
         {
             string input = Write("walk-y.bvh", Walk());
