@@ -62,7 +62,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 MotionClip labelledClip = Copy(offClip), knownClip = Copy(offClip), sourcedClip = Copy(offClip);
                 new FootLocker(feet, new FootLockSettings()).Lock(labelledClip, relative);
                 double[] truthFeet = FootSkating.FootPositions(truth, keys[0], offClip.FrameCount, feet.FootJoints);
-                bool[] planted = FootSkating.Planted(truthFeet, feet.FootJoints.Count, truth.FrameTime, FootSkating.GroundLevel(truthFeet, feet.FootJoints.Count), feet.LegLength);
+                // The truth's contacts as the network learns them: each foot joint from its own ground level (the ankles too).
+                bool[] planted = FootSkating.ContactLabels(truthFeet, feet.FootJoints.Count, truth.FrameTime, feet.LegLength);
                 new FootLocker(feet, new FootLockSettings()).LockWithContacts(knownClip, relative, Channels(planted, feet, offClip.FrameCount));
                 // The bake's own lock again, by hand, to read where it holds each planted joint (its result is the bake's, checked below).
                 var contacts = new FootContacts();
