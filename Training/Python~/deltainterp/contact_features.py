@@ -205,3 +205,27 @@ def rule_counts(records: Dict[int, List[BakeRecord]], leg: float, frame_time: fl
 
 
 __all__ = ["BakeRecord", "bake_records", "features", "ContactClassifier", "fit", "score", "head_counts", "rule_counts"]
+
+
+def probabilities(model: ContactClassifier, record: BakeRecord, leg: float, frame_time: float) -> np.ndarray:
+    """(F, 4) the classifier's probabilities on a bake's filled frames, NaN on keys (no head feature)."""
+    x, _ = channel_features(record, leg, frame_time, with_head=False)
+    out = np.full(record.feet.shape[:2], np.nan)
+    filled = np.setdiff1d(np.arange(record.feet.shape[0]), record.keys)
+    with torch.no_grad():
+        out[filled] = torch.sigmoid(model(torch.from_numpy(x))).double().numpy().T
+    return out
+
+
+def classifier_document(model: ContactClassifier, threshold: float, record: BakeRecord, leg: float,
+                        frame_time: float) -> Dict:
+    """The classifier (no head feature) as JSON for the C# measure, with one bake's foot joints and the
+    probabilities Python gives them (golden vectors: C# must reproduce them)."""
+    layers = [m for m in model.net if isinstance(m, torch.nn.Linear)]
+    return {"offsets": list(OFFSETS), "threshold": threshold,
+            "mean": model.mean.tolist(), "scale": model.scale.tolist(),
+            "layers": [{"weight": m.weight.detach().double().reshape(-1).tolist(), "bias": m.bias.detach().double().tolist(),
+                        "inputs": m.in_features, "outputs": m.out_features} for m in layers],
+            "golden": {"feet": record.feet.reshape(-1).tolist(), "keys": list(record.keys), "leg_length": leg,
+                       "frame_time": frame_time,
+                       "probabilities": np.nan_to_num(probabilities(model, record, leg, frame_time), nan=-1).reshape(-1).tolist()}}
