@@ -20,6 +20,7 @@ import torch
 from . import contract as C
 from . import quaternions, safe_output
 from .checkpoint import LoadedModel, load_checkpoint, save_checkpoint_file
+from .contacts import write_contact_label_vectors
 from .export import export_model
 from .kinematics import forward_kinematics
 from .lafan1 import lafan1_skeleton
@@ -232,7 +233,6 @@ def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -
     paths = _write_model_fixtures(out, make_tiny_model(skeleton), MODEL_NAME, "golden.json")
     contacts = _write_model_fixtures(out, make_tiny_model(skeleton, contacts=True), CONTACTS_MODEL_NAME,
                                      "golden-contacts.json")
-    from .contacts import write_contact_label_vectors  # the contact label rule's golden vectors
     labels = write_contact_label_vectors(out / "contact-labels.json")
     return {**paths, **{f"contacts_{k}": v for k, v in contacts.items()}, "contact_labels": labels}
 
