@@ -138,6 +138,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             TestContext.Out.WriteLine($"  locked ÷ off {lockedMean / offMean:F2} (goal ≤ {(modelFrames == 15 ? 0.30 : 0.40):F2}); locked ÷ truth {lockedMean / truthMean:F1} (goal ≤ {(modelFrames == 15 ? 3.0 : 6.0):F1})");
             TestContext.Out.WriteLine($"  labelled ÷ off {labelledMean / offMean:F2}, ÷ truth {labelledMean / truthMean:F1}; truth's contacts ÷ off {knownMean / offMean:F2}, ÷ truth {knownMean / truthMean:F1}");
             TestContext.Out.WriteLine($"  position error locked ÷ off {error:F3} (non-key-frame-weighted; goal ≤ 1.02)");
+            TestContext.Out.WriteLine($"  planted samples held within 1 % of a leg of their height: {100.0 * totals.HeldWithin / totals.Held:F1} % of {totals.Held} (largest {totals.WorstHeight:F4} leg lengths)");
             TestContext.Out.WriteLine($"  the truth's contacts added to the locker's labels ÷ off {totals.TruthAdded / totals.Samples / offMean:F2}, ÷ truth {totals.TruthAdded / totals.Samples / truthMean:F1}");
             if (classifier != null)
             {
