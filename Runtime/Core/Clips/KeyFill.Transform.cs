@@ -119,9 +119,9 @@ namespace DeltaInterpolator.Core.Clips
             {
                 return curve.Evaluate(time);
             }
-            catch (InvalidOperationException e)
+            catch (InvalidOperationException)
             {
-                throw new KeyFillException(plan.Clip, $"{curve} has no key at {time:0.####} s and a weighted segment there", "expected unweighted tangents where a pose curve is read between its keys, or a key on every pose curve at each key frame (" + e.Message + ")", "curves");
+                throw new KeyFillException(plan.Clip, FormattableString.Invariant($"{curve} has no key at {time:0.####} s and a weighted segment there"), "expected unweighted tangents where a pose curve is read between its keys, or a key on every pose curve at each key frame", "curves");
             }
         }
 

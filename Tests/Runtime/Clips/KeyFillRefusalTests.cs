@@ -123,6 +123,27 @@ namespace DeltaInterpolator.Tests.Clips
         }
 
         [Test]
+        public void AWeightedSegmentToReadBetweenKeysIsRefused()
+        {
+            KeyedClipFixture clip = KeyedClipFixture.Create(new[] { 0, 10 }, euler: false);
+            var curves = new List<KeyedCurve>(clip.Curves);
+            // A key on the root's height at frame 5: every other pose curve is read there, between its keys.
+            int y = curves.FindIndex(c => c.Property == "m_LocalPosition.y");
+            var keys = new List<CurveKey>(curves[y].Keys);
+            keys.Insert(1, new CurveKey(5 / 30f, keys[0].Value, 0, 0));
+            curves[y] = new KeyedCurve(curves[y].Path, curves[y].Property, keys);
+            int x = curves.FindIndex(c => c.Path == clip.BonePaths[3] && c.Property == "m_LocalRotation.x");
+            KeyedCurve bone = curves[x];
+            curves[x] = new KeyedCurve(bone.Path, bone.Property, new[]
+            {
+                new CurveKey(bone.Keys[0].Time, bone.Keys[0].Value, 0, 0, 0.5f, 0.5f, 3),
+                new CurveKey(bone.Keys[1].Time, bone.Keys[1].Value, 0, 0, 0.5f, 0.5f, 3),
+            });
+            KeyFillPlan plan = KeyFill.Plan("clip", curves, 1 / 3.0, Fps);
+            AssertRefused(() => KeyFill.KeyPoses(plan, curves, clip.Rig, clip.BonePaths, clip.ScenePose()), "curves", "has no key at 0.1667 s and a weighted segment there");
+        }
+
+        [Test]
         public void HumanoidFillKeepsTheKeysAndWritesTheRecordedFrames()
         {
             string[] muscles = { "Spine Front-Back" };
