@@ -81,7 +81,7 @@ namespace DeltaInterpolator.Editor.Baking
             window._settings = settings;
             window._model = model;
             window._keyClip = clip;
-            window._source = keys == KeySource.TwoClips ? KeySource.ClipKeyframes : keys;
+            window._source = keys;
         }
 
         private void OnGUI()

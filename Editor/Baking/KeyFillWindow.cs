@@ -34,6 +34,15 @@ namespace DeltaInterpolator.Editor.Baking
             NewClip,
         }
 
+        /// <summary>The keys the In-between Baker takes for a new clip.</summary>
+        internal enum NewClipKeys
+        {
+            /// <summary>The clip's own keys: the same key plan as the fill.</summary>
+            ClipKeys,
+            /// <summary>A key every N (clip frames, model frames or seconds) of a clip keyed on every frame, by the one key planner.</summary>
+            EveryN,
+        }
+
         [SerializeField] private GameObject? _character;
         [SerializeField] private InbetweenerSettings? _settings;
         [SerializeField] private InbetweeningModel? _model;
@@ -43,7 +52,7 @@ namespace DeltaInterpolator.Editor.Baking
         [SerializeField] private int _rangeStart;
         [SerializeField] private int _rangeEnd = 30;
         [SerializeField] private Destination _destination = Destination.ThisClip;
-        [SerializeField] private InbetweenBakeWindow.KeySource _newClipKeys = InbetweenBakeWindow.KeySource.ClipKeyframes;
+        [SerializeField] private NewClipKeys _newClipKeys = NewClipKeys.ClipKeys;
         [NonSerialized] private KeyFillEdit? _edit;
         [NonSerialized] private ClipCurves? _read;
         [NonSerialized] private AnimationClip? _previewClip;
@@ -72,10 +81,10 @@ namespace DeltaInterpolator.Editor.Baking
             _destination = (Destination)EditorGUILayout.EnumPopup("Write to", _destination);
             if (_destination == Destination.NewClip)
             {
-                _newClipKeys = (InbetweenBakeWindow.KeySource)EditorGUILayout.EnumPopup("Keys from", _newClipKeys);
+                _newClipKeys = (NewClipKeys)EditorGUILayout.EnumPopup("Keys from", _newClipKeys);
                 if (GUILayout.Button("Open in the In-between Baker") && _clip != null)
                 {
-                    InbetweenBakeWindow.Show(_character, _settings, _model, _clip, _newClipKeys);
+                    InbetweenBakeWindow.Show(_character, _settings, _model, _clip, _newClipKeys == NewClipKeys.EveryN ? InbetweenBakeWindow.KeySource.EveryN : InbetweenBakeWindow.KeySource.ClipKeyframes);
                 }
 
                 return;

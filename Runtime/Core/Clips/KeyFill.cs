@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using static System.FormattableString;
 
 namespace DeltaInterpolator.Core.Clips
 {
@@ -46,7 +47,7 @@ namespace DeltaInterpolator.Core.Clips
             if (curves == null) throw new ArgumentNullException(nameof(curves));
             if (!(frameRate > 0) || double.IsInfinity(frameRate)) throw new ArgumentOutOfRangeException(nameof(frameRate), frameRate, "expected the model's frame rate, a positive number");
             if (!(clipLength >= 0) || double.IsInfinity(clipLength)) throw new ArgumentOutOfRangeException(nameof(clipLength), clipLength, "expected the clip's length in seconds, a finite number ≥ 0");
-            if (clipLength * frameRate > MaxFrames) throw new KeyFillException(clip, $"a clip of {clipLength:0.###} s is {clipLength * frameRate:0} frames at {frameRate:0.##} fps", $"expected at most {MaxFrames} frames", nameof(clipLength));
+            if (clipLength * frameRate > MaxFrames) throw new KeyFillException(clip, Invariant($"a clip of {clipLength:0.###} s is {clipLength * frameRate:0} frames at {frameRate:0.##} fps"), Invariant($"expected at most {MaxFrames} frames"), nameof(clipLength));
 
             KeyFillClipKind? kind = null;
             double tolerance = OnFrame / frameRate;
@@ -80,7 +81,7 @@ namespace DeltaInterpolator.Core.Clips
                     {
                         if (Math.Abs(other - key.Time) * frameRate > OnFrame)
                         {
-                            throw new KeyFillException(clip, $"keys at {Seconds(Math.Min(other, key.Time))} s and {Seconds(Math.Max(other, key.Time))} s fall on one frame ({frame}) at the model's {frameRate:0.##} fps",
+                            throw new KeyFillException(clip, Invariant($"keys at {Seconds(Math.Min(other, key.Time))} s and {Seconds(Math.Max(other, key.Time))} s fall on one frame ({frame}) at the model's {frameRate:0.##} fps"),
                                 "expected at most one key time per model frame (the model fills whole frames of its rate)", nameof(curves));
                         }
 
@@ -131,14 +132,14 @@ namespace DeltaInterpolator.Core.Clips
             for (int i = 1; i < keyFrames.Length; i++) gap |= keyFrames[i] - keyFrames[i - 1] > 1;
             if (!gap)
             {
-                throw new KeyFillException(clip, $"no frame lies between the keys{(range == null ? "" : " of the range")} at the model's {frameRate:0.##} fps",
+                throw new KeyFillException(clip, Invariant($"no frame lies between the keys{(range == null ? "" : " of the range")} at the model's {frameRate:0.##} fps"),
                     "expected two keys at least two model frames apart (a gap to fill)", range == null ? nameof(curves) : nameof(range));
             }
 
             var warnings = new List<string>();
             if (snapped > 0)
             {
-                warnings.Add($"{snapped} key time{(snapped == 1 ? " lies" : "s lie")} between the model's frames at {frameRate:0.##} fps; the bake rounds {(snapped == 1 ? "it" : "them")} to the nearest frame (the keys themselves stay as they are).");
+                warnings.Add(Invariant($"{snapped} key time{(snapped == 1 ? " lies" : "s lie")} between the model's frames at {frameRate:0.##} fps; the bake rounds {(snapped == 1 ? "it" : "them")} to the nearest frame (the keys themselves stay as they are)."));
             }
 
             return new KeyFillPlan(clip, kind.Value, frameRate, keyFrames, times.ToArray(), snapped, range, warnings.ToArray(), pose);
