@@ -58,6 +58,7 @@ namespace DeltaInterpolator.Editor.Baking
         [NonSerialized] private AnimationClip? _previewClip;
         [NonSerialized] private float _previewTime;
         [NonSerialized] private string _report = "";
+        [NonSerialized] private (UnityEngine.Object? Clip, UnityEngine.Object? Character, UnityEngine.Object? Settings, UnityEngine.Object? Model, bool UseRange, int Start, int End, bool LockFeet) _computedFor;
 
         [MenuItem("Window/Animation/In-between Fill")]
         private static void Open()
@@ -99,6 +100,8 @@ namespace DeltaInterpolator.Editor.Baking
             }
 
             _lockFeet = EditorGUILayout.Toggle("Lock planted feet", _lockFeet);
+            // A fill computed for other inputs is neither previewed nor written: computed again on the next button.
+            if (_edit != null && !_computedFor.Equals(Inputs())) Forget();
             string? problem = Problem();
             if (problem != null)
             {
@@ -155,6 +158,9 @@ namespace DeltaInterpolator.Editor.Baking
             return null;
         }
 
+        private (UnityEngine.Object?, UnityEngine.Object?, UnityEngine.Object?, UnityEngine.Object?, bool, int, int, bool) Inputs() =>
+            (_clip, _character, _settings, ModelAsset(), _useRange, _rangeStart, _rangeEnd, _lockFeet);
+
         private InbetweeningModel? ModelAsset() => _model != null ? _model : _settings != null ? _settings.Model : null;
 
         /// <summary>The clip read and the fill computed (Core's), or null after a dialog said why not.</summary>
@@ -207,6 +213,7 @@ namespace DeltaInterpolator.Editor.Baking
                     _report = $"{plan.GapCount} gap{(plan.GapCount == 1 ? "" : "s")}, {plan.MissingFrames} frames at {rate:0.##} fps; {edit.FilledKeys} keys on {edit.Changes.Count} curves."
                               + (warnings.Count > 0 ? "\n" + string.Join("\n", warnings) : "");
                     _read = read;
+                    _computedFor = Inputs();
                     return edit;
                 }
             }
