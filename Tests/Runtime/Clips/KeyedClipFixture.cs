@@ -19,7 +19,7 @@ namespace DeltaInterpolator.Tests.Clips
     /// window keys them) and the root bone's position, with tangent modes and tangents an animator's keys carry.
     /// A scale curve, which no fill touches, rides along.
     /// </summary>
-    internal sealed class KeyedClipFixture
+    public sealed class KeyedClipFixture
     {
         public const string Sample = "Samples~/Demo/cmu_09_12_walk_navigate.bvh";
         public const double ModelFps = 30;
