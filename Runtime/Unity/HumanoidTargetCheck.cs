@@ -34,7 +34,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>The first time <paramref name="clip"/>'s target is read: compares <paramref name="target"/> (root 3, then bones × 4) with SampleAnimation's.</summary>
         public void Check(AnimationClip clip, float time, ReadOnlySpan<double> target)
         {
-            if (clip == _checked) return;
+            if (clip == null || clip == _checked) return;
             _checked = clip;
             if (!_animator.isHuman || _unavailable) return;
             if (_copy == null && !Copy()) return;

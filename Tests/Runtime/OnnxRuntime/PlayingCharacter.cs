@@ -66,6 +66,27 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>What the last frame showed (the animation job's output).</summary>
         public ArrayPoseStream Shown { get; }
 
+        /// <summary>The character (for hand-offs and its Animator transitions).</summary>
+        public TransitionCharacter Character => _character;
+
+        /// <summary>The controller layers' state machines the next frame hands in (as the glue reads them), or null.</summary>
+        public AnimatorLayerState[]? Layers { get; set; }
+
+        /// <summary>Entries of <see cref="Layers"/> filled.</summary>
+        public int LayerCount { get; set; }
+
+        /// <summary>Bones a masked controller layer above drives, kept from the controller's pose (<see cref="PoseBlend.ApplyMasked"/>), or null.</summary>
+        public bool[]? KeptBones { get; set; }
+
+        /// <summary>
+        /// Called in each frame after the character's frame and before the controller's pose is taken: the glue's part that acts on the
+        /// frame's instructions to the controller (<see cref="CharacterFrameOutput.PlayState"/>).
+        /// </summary>
+        public Action<CharacterFrameOutput>? BeforeController { get; set; }
+
+        /// <summary>The last frame's output (its pose buffer is the character's).</summary>
+        public CharacterFrameOutput LastFrame { get; private set; }
+
         /// <summary>Where the character stands in the world (moved by root motion after <see cref="PlayWithRootMotion"/>).</summary>
         public RootFrame Place => _place.ToFrame();
 
@@ -97,7 +118,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// One rendered frame <paramref name="deltaTime"/> seconds after the last: the character's frame, the
         /// controller's pose at the new time, the transition blended over it into <see cref="Shown"/>.
         /// </summary>
-        public void Frame(double deltaTime)
+        public CharacterFrameOutput Frame(double deltaTime)
         {
             var input = new CharacterFrameInput
             {
@@ -110,16 +131,21 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 Place = _place,
                 ControllerVelocityX = _streamVelocity.X, ControllerVelocityY = _streamVelocity.Y, ControllerVelocityZ = _streamVelocity.Z,
                 AppliedVelocityX = _appliedVelocity.X, AppliedVelocityY = _appliedVelocity.Y, AppliedVelocityZ = _appliedVelocity.Z,
+                Layers = Layers,
+                LayerCount = LayerCount,
             };
             CharacterFrameOutput frame = _character.Frame(input, ShownPose(), _sampled ? _sampledTarget : ReadOnlySpan<double>.Empty);
             _sampled = false;
             // A plain check (NUnit's Assert would allocate): every frame here advances the clock and plays.
             if (!frame.Played) throw new InvalidOperationException("a frame did not play: " + frame.FailureReason, frame.Error);
             if (frame.RootMotionWarning != null) RootMotionWarnings.Add(frame.RootMotionWarning);
+            BeforeController?.Invoke(frame);
             _controller(Time, _stream.Root, _stream.Rotations);
             var pose = new ReadOnlySpan<double>(frame.Pose);
-            PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), Shown.Root, Shown.Rotations);
+            PoseBlend.ApplyMasked(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), KeptBones, Shown.Root, Shown.Rotations);
             if (_rootMotion) ApplyRootMotion(frame, deltaTime);
+            LastFrame = frame;
+            return frame;
         }
 
         // The job's ProcessRootMotion (the controller's velocity on the stream, the transition's blended over it), then
@@ -143,6 +169,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             RotationW = f.Rotation.W, RotationX = f.Rotation.X, RotationY = f.Rotation.Y, RotationZ = f.Rotation.Z,
             Scale = f.Scale,
         };
+
+        /// <summary>A hand-off into a controller state, from the pose shown, as the component requests one.</summary>
+        public int RequestState(in StateTarget state, double seconds, IControllerStates controller)
+        {
+            _character.Showed(_place, _rootMotion, ShownPose());
+            return _character.RequestState(state, seconds, controller);
+        }
 
         /// <summary>A transition to a pose given in the character's space, from the pose shown, as the component requests one.</summary>
         public int RequestTransition(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double seconds)
