@@ -237,7 +237,8 @@ static class Program
     static readonly Regex MessageMenuPath = new(@"\b((?:Add Component|Assets|Create|Window|GameObject|Component|Tools|Edit|File|Project Settings) (?:→|>) [^""().;:,\n]+)");
     static readonly Regex MessageMenuStep = new(@"\s+(?:→|>)\s+");
     // Unity's own windows the messages walk through.
-    static readonly string[] UnityOwnMessageMenus = { "Window/Package Manager", "Project Settings", "Edit/Project Settings", "File" };
+    // (Window → Animation → Animation: Unity's Animation window, which a message may name mid-sentence.)
+    static readonly string[] UnityOwnMessageMenus = { "Window/Package Manager", "Window/Animation/Animation", "Project Settings", "Edit/Project Settings", "File" };
 
     static void CheckMenus(List<Type> types, List<string> docs, string root)
     {
