@@ -259,6 +259,28 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
+        public void ReadingABlendAtThePlayheadAllocatesNothing()
+        {
+            var model = new BlendModel(_model.Contract, _model, maxBoneDeviationDegrees: 30);
+            TrackLayout layout = Blending();
+            BlendFrames frames = new BlendCache().Get(model, _rig, layout.Spans[0], new MotionClipPoses("walk", _rig, _walk), new MotionClipPoses("jumps", _rig, _jumps));
+            int bones = _rig.Skeleton.JointCount;
+            double[] root = new double[3], rotations = new double[4 * bones];
+            void Frame(int i)
+            {
+                TrackMoment moment = layout.Locate(2.5 + (i % 50) / 100.0);
+                frames.Sample(moment.Fraction, root, rotations);
+            }
+
+            Frame(0); // warm-up
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 1000; i++) Frame(i);
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            TestContext.WriteLine($"1000 playhead reads: {bytes} bytes allocated");
+            Assert.That(bytes, Is.EqualTo(0), "the mixer's per-frame path (Locate, Sample) allocates nothing");
+        }
+
+        [Test]
         public void RefusesWhatIsNoCacheOrModel()
         {
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => _ = new BlendCache(0));
