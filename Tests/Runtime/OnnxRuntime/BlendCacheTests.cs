@@ -259,6 +259,37 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
+        public void AGapUnderOneMissingFrameIsTheSlerpOfItsPosesAndAThirdClipInABlendCrossfades()
+        {
+            var network = new CountingNetwork(_model);
+            var model = new BlendModel(_model.Contract, network, maxBoneDeviationDegrees: 30);
+            var cache = new BlendCache();
+            IClipPoses walk = new MotionClipPoses("walk", _rig, _walk), jumps = new MotionClipPoses("jumps", _rig, _jumps);
+            var said = new List<string>();
+            // 1/30 s between the clips: one model frame, no missing frame to fill.
+            TrackLayout tiny = TrackLayout.Create(new[] { new TrackClipTiming(0, 3.0, 0, 3.0), new TrackClipTiming(3.0 + 1 / 30.0, 3.0, 0.2, 401 / 120.0) });
+            BlendFrames gap = cache.Get(model, _rig, tiny.Spans[0], walk, jumps, said.Add);
+            Assert.That((gap.Mode, gap.FrameCount), Is.EqualTo((BlendMode.Slerp, 2)));
+            int bones = _rig.Skeleton.JointCount;
+            double[] root = new double[3], rotations = new double[4 * bones], clipRoot = new double[3], clipRotations = new double[4 * bones];
+            gap.Sample(0, root, rotations);
+            walk.Sample(3.0, clipRoot, clipRotations);
+            Assert.That(Math.Max(Difference(root, clipRoot), Difference(rotations, clipRotations)), Is.LessThan(Tolerance));
+            gap.Sample(1, root, rotations);
+            jumps.Sample(0.2, clipRoot, clipRotations);
+            Assert.That(Math.Max(Difference(root, clipRoot), Difference(rotations, clipRotations)), Is.LessThan(Tolerance));
+            Assert.That(said.Count, Is.EqualTo(1));
+
+            // A third clip starting inside the walk → jumps blend: Timeline's crossfade, said once however often the graph is rebuilt.
+            said.Clear();
+            TrackLayout three = TrackLayout.Create(new[] { new TrackClipTiming(0, 3.0, 0, 3.0), new TrackClipTiming(2.5, 3.0, 0.2, 401 / 120.0), new TrackClipTiming(2.8, 1.0, 0, 3.0) });
+            for (int i = 0; i < 3; i++) Assert.That(cache.Get(model, _rig, three.Spans[0], walk, jumps, said.Add).Mode, Is.EqualTo(BlendMode.Crossfade));
+            Assert.That(said.Count, Is.EqualTo(1));
+            Assert.That(said[0], Does.Contain("starts inside the blend"));
+            Assert.That(network.Runs, Is.EqualTo(0));
+        }
+
+        [Test]
         public void ReadingABlendAtThePlayheadAllocatesNothing()
         {
             var model = new BlendModel(_model.Contract, _model, maxBoneDeviationDegrees: 30);
