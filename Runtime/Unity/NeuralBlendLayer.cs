@@ -21,12 +21,23 @@ namespace DeltaInterpolator.Unity
     /// <remarks>
     /// The cache is shared by every track in the process, so a graph rebuilt without a change (Timeline rebuilds on
     /// every edit, on entering Play mode, on scrubbing after one) finds its blends again; the loaded models are shared the
-    /// same way and live as long as the domain.
+    /// same way and live as long as the domain (released when it unloads).
     /// </remarks>
     public sealed class NeuralBlendLayer : IDisposable
     {
         private static readonly BlendCache s_cache = new BlendCache(256);
         private static readonly Dictionary<(InbetweeningModel, string), Inbetweener> s_models = new Dictionary<(InbetweeningModel, string), Inbetweener>();
+
+        static NeuralBlendLayer()
+        {
+            // The engines' workers hold native memory: release them when the Editor reloads scripts or the player quits.
+            AppDomain.CurrentDomain.DomainUnload += (sender, e) =>
+            {
+                foreach (Inbetweener network in s_models.Values) network.Dispose();
+                s_models.Clear();
+                s_cache.Clear();
+            };
+        }
 
         private readonly Animator _animator;
         private readonly CharacterRig _rig;
