@@ -4,6 +4,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
 using Unity.InferenceEngine;
+using Unity.Jobs;
 using Unity.Profiling;
 
 namespace DeltaInterpolator.Sentis
@@ -338,6 +339,10 @@ namespace DeltaInterpolator.Sentis
                 }
 
                 worker.Schedule();
+                // Sentis CPU schedules Burst jobs into the job system's batch, which starts them only when flushed: flush now so the
+                // run starts at once on the worker threads, rather than at the next poll of its fence (JobHandle.IsCompleted flushes
+                // too, unity:Runtime/Jobs/ScriptBindings/JobHandle.bindings.cs), a frame later in a game.
+                if (_owner.BackendType == BackendType.CPU) JobHandle.ScheduleBatchedJobs();
                 if (_deviceOutput)
                 {
                     // Copied on the device at once: it stays there for Core's handle, past the worker's next run.
