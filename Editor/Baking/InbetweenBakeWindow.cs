@@ -213,7 +213,7 @@ namespace DeltaInterpolator.Editor.Baking
                     double rate = contract.FramesPerSecond;
                     // The character as the component sees it: the same bones, joint map and renames.
                     CharacterRig rig = RigCollector.Collect(animator, settings, contract.Skeleton, out JointMap jointMap, out Transform[] bones);
-                    bool humanoid = settings.Rig == CharacterRigKind.Humanoid;
+                    bool humanoid = settings.RigOf(animator) == CharacterRigKind.Humanoid;
 
                     CharacterPoseTrack track;
                     string name;

@@ -42,9 +42,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>Builds from <paramref name="s"/>; refuses (with what to do) a missing model or engine and a rig that cannot be mapped.</summary>
         public static CharacterBuild Create(Animator animator, InbetweenerSettings s, string graphName, ushort sortingOrder)
         {
-            InbetweeningModel model = s.Model != null ? s.Model : throw new InvalidOperationException($"the settings {s.name} have no model; assign an imported in-betweening model");
-            IInferenceBackendFactory factory = InferenceBackends.Find(s.Backend)
-                ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
+            IInferenceBackendFactory factory = Engine(s, out InbetweeningModel model);
             TransitionScheduler scheduler = SharedSchedulers.Acquire(model, factory);
             try
             {
@@ -62,6 +60,14 @@ namespace DeltaInterpolator.Unity
                 SharedSchedulers.Release(scheduler);
                 throw;
             }
+        }
+
+        /// <summary>The settings' model and engine; refuses (with what to do) a missing model or an engine that is not installed.</summary>
+        public static IInferenceBackendFactory Engine(InbetweenerSettings s, out InbetweeningModel model)
+        {
+            model = s.Model != null ? s.Model : throw new InvalidOperationException($"the settings {s.name} have no model; assign an imported in-betweening model");
+            return InferenceBackends.Find(s.Backend)
+                ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
         }
 
         public void Dispose()

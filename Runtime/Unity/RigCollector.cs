@@ -28,7 +28,8 @@ namespace DeltaInterpolator.Unity
             Walk(animator.transform, -1, all, names, parents);
             string?[] roles;
             int root;
-            if (settings.Rig == CharacterRigKind.Humanoid)
+            CharacterRigKind kind = settings.RigOf(animator);
+            if (kind == CharacterRigKind.Humanoid)
             {
                 if (!animator.isHuman)
                 {
@@ -73,7 +74,7 @@ namespace DeltaInterpolator.Unity
 
             var positions = new double[3 * n];
             var rotations = new double[4 * n];
-            if (settings.Rig == CharacterRigKind.Humanoid)
+            if (kind == CharacterRigKind.Humanoid)
             {
                 AvatarTPose(animator, bones, positions, rotations, character);
             }
@@ -88,7 +89,7 @@ namespace DeltaInterpolator.Unity
             }
 
             var rig = new CharacterRig(character, selection.BoneNames, selection.Parents, positions, rotations, armatureFrame);
-            return settings.Rig == CharacterRigKind.Generic && settings.ReferencePose == ReferencePoseSource.ModelAxes ? rig.WithModelTPoseByAxes() : rig;
+            return kind == CharacterRigKind.Generic && settings.ReferencePose == ReferencePoseSource.ModelAxes ? rig.WithModelTPoseByAxes() : rig;
         }
 
         /// <summary>Where <paramref name="t"/> stands in the world (its x scale stands for its uniform scale).</summary>
