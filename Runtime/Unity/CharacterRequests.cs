@@ -1,5 +1,6 @@
 using System;
 using DeltaInterpolator.Core.Playback;
+using Unity.Profiling;
 using UnityEngine;
 
 namespace DeltaInterpolator.Unity
@@ -19,6 +20,9 @@ namespace DeltaInterpolator.Unity
         private readonly TrainedRangeWarnings _warnings = new TrainedRangeWarnings();
         private readonly double[] _targetRoot = new double[3];
         private readonly double[] _targetRotations;
+
+        // The Profiler's marker around every request (Window → Analysis → Profiler, CPU timeline).
+        private static readonly ProfilerMarker s_Request = new ProfilerMarker("MotionInbetweener.RequestTransition");
 
         public CharacterRequests(TransitionCharacter character, TransitionLayerBinder binder, Animator animator, InbetweenerSettings settings, MotionInbetweener component, int bones)
         {
@@ -46,11 +50,14 @@ namespace DeltaInterpolator.Unity
         {
             if (clip == null) throw new ArgumentNullException(nameof(clip));
             if (!(clipTime >= 0) || float.IsInfinity(clipTime)) throw new ArgumentOutOfRangeException(nameof(clipTime), clipTime, "expected a finite time in the clip, in seconds ≥ 0");
-            float length = Length(seconds);
-            Showed();
-            int id = _character.DeferTransition(length);
-            _binder.SampleClip(clip, clipTime);
-            return id;
+            using (s_Request.Auto())
+            {
+                float length = Length(seconds);
+                Showed();
+                int id = _character.DeferTransition(length);
+                _binder.SampleClip(clip, clipTime);
+                return id;
+            }
         }
 
         /// <summary>A pose given by the caller: the root bone's local position and one local rotation per bone.</summary>
@@ -58,13 +65,16 @@ namespace DeltaInterpolator.Unity
         {
             int bones = _targetRotations.Length / 4;
             if (localRotations == null || localRotations.Length != bones) throw new ArgumentException($"expected {bones} rotations, one per bone of Bones", nameof(localRotations));
-            float length = Length(seconds);
-            _targetRoot[0] = rootPosition.x;
-            _targetRoot[1] = rootPosition.y;
-            _targetRoot[2] = rootPosition.z;
-            for (int b = 0; b < localRotations.Length; b++) UnityPoses.Write(localRotations[b], _targetRotations, 4 * b);
-            Showed();
-            return _character.RequestTransition(_targetRoot, _targetRotations, length);
+            using (s_Request.Auto())
+            {
+                float length = Length(seconds);
+                _targetRoot[0] = rootPosition.x;
+                _targetRoot[1] = rootPosition.y;
+                _targetRoot[2] = rootPosition.z;
+                for (int b = 0; b < localRotations.Length; b++) UnityPoses.Write(localRotations[b], _targetRotations, 4 * b);
+                Showed();
+                return _character.RequestTransition(_targetRoot, _targetRotations, length);
+            }
         }
 
         /// <summary>
@@ -78,12 +88,16 @@ namespace DeltaInterpolator.Unity
             if (layer < 0 || layer >= layers) throw new ArgumentOutOfRangeException(nameof(layer), layer, $"expected a layer of the Animator Controller (0–{layers - 1})");
             if (!_animator.HasState(layer, stateHash)) throw new ArgumentException($"the Animator Controller has no such state on layer {layer}; expected a state's name or full path (\"Base Layer.Roll\"), or its Animator.StringToHash", stateArgument);
             if (!(timeInState >= 0) || float.IsInfinity(timeInState)) throw new ArgumentOutOfRangeException(nameof(timeInState), timeInState, "expected a finite time in the state, in seconds ≥ 0");
-            float length = Length(seconds);
-            Showed();
-            int id = _character.RequestState(new StateTarget(layer, stateHash, timeInState), length, this);
-            // Read in this frame's evaluation rather than after the next frame's (the frame output asks again until it is read).
-            _binder.SampleState(new StateTarget(layer, stateHash, timeInState));
-            return id;
+            using (s_Request.Auto())
+            {
+                float length = Length(seconds);
+                Showed();
+                var state = new StateTarget(layer, stateHash, timeInState);
+                int id = _character.RequestState(state, length, this);
+                // Read in this frame's evaluation rather than after the next frame's (the frame output asks again until it is read).
+                _binder.SampleState(state);
+                return id;
+            }
         }
 
         // The request's length: the settings' default for ≤ 0; NaN is refused rather than silently taken as "default".

@@ -8,12 +8,15 @@ using UnityEngine;
 
 namespace DeltaInterpolator.Unity
 {
-    /// <summary>Neural transitions for a character: call <see cref="RequestTransition(AnimationClip, float, float)"/>(or with a pose) and the character moves from the
-    /// pose it shows now to the target through frames that the in-betweening model fills, arriving on the first rendered frame at or after the requested time; then its
-    /// own animation takes back over. Plays as an animation job layered after the Animator Controller, so it composes with whatever the controller does.</summary>
+    /// <summary>Neural transitions for a character. Hand over to an Animator state with <see cref="RequestTransition(string, int, float, float)"/>: the character moves
+    /// from the pose it shows now to the state's pose through frames the in-betweening model fills, and on arrival the controller is put in that state and plays on.
+    /// Or, with no code, let the settings' <see cref="InbetweenerSettings.NeuralTransitions"/> replace the controller's own crossfades by in-betweens. A clip or pose
+    /// request (<see cref="RequestTransition(AnimationClip, float, float)"/>) visits its pose, then the controller's own animation takes back over. Plays as an
+    /// animation job layered after the Animator Controller, so it composes with whatever the controller does.</summary>
     /// <remarks>
-    /// Thin glue over Core's <see cref="TransitionCharacter"/>: each frame <c>Update</c> gathers what Unity read, makes
-    /// one call, and the binder writes its output into the job, which blends it over the controller's output.
+    /// Thin glue over Core's <see cref="TransitionCharacter"/>: each frame <c>Update</c> gathers what Unity read (the binder, and the
+    /// <see cref="AnimatorTransitionWatcher"/> for the controller's layers), makes one call, and the binder carries out its output: the
+    /// pose into the job, which blends it over the controller's output, a state to sample, a state to play. Requests from game code go through <see cref="CharacterRequests"/>.
     /// The network runs on a worker thread when the engine allows it, otherwise on the main thread, pumped once per
     /// frame before every script's <c>Update</c> (<see cref="SchedulerPump"/>).
     /// The settings choose the rig (<see cref="InbetweenerSettings.Rig"/>): a humanoid avatar's bones and
@@ -209,10 +212,9 @@ namespace DeltaInterpolator.Unity
         }
 
         // Profiler markers (Window → Analysis → Profiler, CPU timeline) around the component's frame (recording the pose
-        // shown last frame, advancing the transition, planning root motion: one Core call) and its requests. The
+        // shown last frame, advancing the transition, planning root motion: one Core call); requests are marked by CharacterRequests. The
         // schedulers' stages are marked where they pump (SchedulerPump); inference by each backend (e.g. DeltaInterpolator.Sentis.Run).
         private static readonly ProfilerMarker s_Frame = new ProfilerMarker("MotionInbetweener.Frame");
-        private static readonly ProfilerMarker s_Request = new ProfilerMarker("MotionInbetweener.RequestTransition");
 
         // The transition advances where the Animator does: rendered frames (Normal, UnscaledTime) or physics
         // steps (Fixed), by the step of its clock (Core's AnimationClock decides; only Unity's values are read here).
