@@ -40,6 +40,10 @@ namespace DeltaInterpolator.Unity
         private int[] _parameterHashes = new int[0];
         private AnimatorControllerParameterType[] _parameterTypes = new AnimatorControllerParameterType[0];
         private int _request;
+        private int _stateHash;
+        private int _layer;
+        private int _checkedRequest;
+        private bool _warned;
 
         public StateTargetSampler(PlayableGraph graph, Animator animator, NativeArray<TransformStreamHandle> bones, int rootBone, ushort sortingOrder)
         {
@@ -78,12 +82,30 @@ namespace DeltaInterpolator.Unity
             int layers = _controllerPlayable.GetLayerCount();
             for (int l = 1; l < layers; l++) _controllerPlayable.SetLayerWeight(l, l == layer ? 1f : 0f);
             _controllerPlayable.PlayInFixedTime(stateHash, layer, timeInState);
+            _stateHash = stateHash;
+            _layer = layer;
             // A newer request supersedes one not read yet: only the latest counts as read.
             _requests[0] = ++_request;
         }
 
         /// <summary>The pose of the latest <see cref="Sample"/> once the animation evaluation has read it; empty while it has not.</summary>
-        public ReadOnlySpan<double> Read() => _request != 0 && _requests[1] == _request ? _target.AsReadOnlySpan() : default;
+        public ReadOnlySpan<double> Read()
+        {
+            if (_request == 0 || _requests[1] != _request) return default;
+            if (_checkedRequest != _request) CheckEntered();
+            return _target.AsReadOnlySpan();
+        }
+
+        // The run-time check of the route: the copy took the Play in the evaluation that read the pose (a speed-0 controller
+        // playable still updates its state machine). If the engine ever did not, the target would be another state's pose: say so once.
+        private void CheckEntered()
+        {
+            _checkedRequest = _request;
+            AnimatorStateInfo entered = _controllerPlayable.GetCurrentAnimatorStateInfo(_layer);
+            if (_warned || entered.fullPathHash == _stateHash || entered.shortNameHash == _stateHash) return;
+            _warned = true;
+            Debug.LogWarning($"{_animator.name}: the Motion Inbetweener's state reader was not in the requested state (hash {_stateHash}, layer {_layer}) when it read the target pose, so the transition's target is another state's pose; expected the controller copy to enter the state in the same evaluation (please report it with your Unity version)", _animator);
+        }
 
         /// <summary>Creates the controller instance at the first request, and again when the Animator's controller changed since.</summary>
         private void Prepare()

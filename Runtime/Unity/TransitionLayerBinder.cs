@@ -29,6 +29,10 @@ namespace DeltaInterpolator.Unity
         private readonly Animator _animator;
         private readonly AnimatorTransitionWatcher _watcher;
         private bool _stateTargetLatest;
+        // A hand-off's state the Animator was told to play last frame, to check it did (0: none pending).
+        private int _playedState;
+        private int _playedLayer;
+        private bool _warnedPlay;
 
         /// <summary>
         /// Binds <paramref name="bones"/> of <paramref name="animator"/> (the root bone first) in a graph named
@@ -98,6 +102,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>What Unity read for this frame callback: its clock, where the character stands, the controller's root velocity the job saw, the watched layers' state machines.</summary>
         public CharacterFrameInput Gather(FrameCallback callback)
         {
+            if (_playedState != 0) CheckPlayed();
             AnimatorLayerState[] layers = _watcher.Read();
             return new CharacterFrameInput
             {
@@ -125,8 +130,27 @@ namespace DeltaInterpolator.Unity
         {
             if (frame.Played) Write(frame);
             if (frame.SampleState) SampleState(frame.Sample);
-            if (frame.PlayState) _animator.PlayInFixedTime(frame.Play.StateHash, frame.Play.Layer, (float)frame.Play.Seconds);
+            if (frame.PlayState)
+            {
+                _animator.PlayInFixedTime(frame.Play.StateHash, frame.Play.Layer, (float)frame.Play.Seconds);
+                _playedState = frame.Play.StateHash;
+                _playedLayer = frame.Play.Layer;
+            }
+
             return !frame.Failed;
+        }
+
+        // The run-time check of the hand-off: a PlayInFixedTime made before the animation update is in effect after it (the
+        // Animator is in the state, or already leaving it by one of its transitions). If not, the character popped back: say so once.
+        private void CheckPlayed()
+        {
+            AnimatorStateInfo current = _animator.GetCurrentAnimatorStateInfo(_playedLayer);
+            bool entered = current.fullPathHash == _playedState || current.shortNameHash == _playedState;
+            int hash = _playedState;
+            _playedState = 0;
+            if (entered || _warnedPlay) return;
+            _warnedPlay = true;
+            Debug.LogWarning($"{_animator.name}: the Animator was told to play the hand-off's state (hash {hash}, layer {_playedLayer}) in the frame the transition arrived, but it shows another state after the animation update; expected it to play on in that state (a script calling Play in the same frame overrides the hand-off; a culled Animator plays it when it is visible again)", _animator);
         }
 
         private void Write(in CharacterFrameOutput frame)

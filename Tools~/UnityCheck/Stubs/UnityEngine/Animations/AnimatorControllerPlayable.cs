@@ -11,6 +11,8 @@ namespace UnityEngine.Animations
 
         public void SetLayerWeight(int layerIndex, float weight) => throw null!;
 
+        public AnimatorStateInfo GetCurrentAnimatorStateInfo(int layerIndex) => throw null!;
+
         public void SetFloat(int id, float value) => throw null!;
 
         public void SetBool(int id, bool value) => throw null!;
