@@ -22,6 +22,8 @@ namespace UnityEngine
     // source: unity:Modules/Animation/ScriptBindings/AvatarMask.bindings.cs
     public sealed partial class AvatarMask : Object
     {
+        public AvatarMask() => throw null!;
+
         public bool GetHumanoidBodyPartActive(AvatarMaskBodyPart index) => throw null!;
 
         public int transformCount { get => throw null!; set => throw null!; }
@@ -29,5 +31,9 @@ namespace UnityEngine
         public string GetTransformPath(int index) => throw null!;
 
         public bool GetTransformActive(int index) => throw null!;
+
+        public void SetTransformPath(int index, string path) => throw null!;
+
+        public void SetTransformActive(int index, bool value) => throw null!;
     }
 }
