@@ -1,6 +1,7 @@
 using System;
 using System.Globalization;
 using System.Text;
+using DeltaInterpolator.Core.Json;
 using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Inference
@@ -77,27 +78,6 @@ namespace DeltaInterpolator.Core.Inference
 
         private static string Range((int Min, int Max) r) => "[" + r.Min.ToString(CultureInfo.InvariantCulture) + ", " + r.Max.ToString(CultureInfo.InvariantCulture) + "]";
 
-        private static string Quote(string s)
-        {
-            var b = new StringBuilder(s.Length + 2);
-            b.Append('"');
-            foreach (char c in s)
-            {
-                switch (c)
-                {
-                    case '"': b.Append("\\\""); break;
-                    case '\\': b.Append("\\\\"); break;
-                    case '\n': b.Append("\\n"); break;
-                    case '\r': b.Append("\\r"); break;
-                    case '\t': b.Append("\\t"); break;
-                    default:
-                        if (c < 0x20) b.Append("\\u").Append(((int)c).ToString("x4", CultureInfo.InvariantCulture));
-                        else b.Append(c);
-                        break;
-                }
-            }
-
-            return b.Append('"').ToString();
-        }
+        private static string Quote(string s) => JsonText.Quote(s);
     }
 }

@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Globalization;
 using System.Text;
 using DeltaInterpolator.Core.Json;
 
@@ -48,26 +47,6 @@ namespace DeltaInterpolator.Core.Inference
             return result;
         }
 
-        private static void Quote(StringBuilder text, string value)
-        {
-            text.Append('"');
-            foreach (char c in value)
-            {
-                switch (c)
-                {
-                    case '"': text.Append("\\\""); break;
-                    case '\\': text.Append("\\\\"); break;
-                    case '\n': text.Append("\\n"); break;
-                    case '\r': text.Append("\\r"); break;
-                    case '\t': text.Append("\\t"); break;
-                    default:
-                        if (c < 0x20) text.Append("\\u").Append(((int)c).ToString("x4", CultureInfo.InvariantCulture));
-                        else text.Append(c);
-                        break;
-                }
-            }
-
-            text.Append('"');
-        }
+        private static void Quote(StringBuilder text, string value) => JsonText.AppendString(text, value);
     }
 }

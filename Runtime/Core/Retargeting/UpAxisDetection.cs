@@ -50,15 +50,14 @@ namespace DeltaInterpolator.Core.Retargeting
         /// <summary>The first built-in joint map that finds hips, head and feet in <paramref name="skeleton"/> (for tools without a model skeleton), or null.</summary>
         public static JointMap? BodyMap(Skeleton skeleton)
         {
-            foreach (JointMap map in JointMap.BuiltIn) if (BodyJoints.Find(skeleton, map) != null) return map;
+            foreach (JointMap map in JointMap.BuiltIn) if (FindBody(skeleton, map) != null) return map;
             return null;
         }
 
         /// <summary>The up axis of a reference pose (Y or Z), or null when the map finds no hips, head or feet in it.</summary>
         public static UpAxis? OfPose(ReferencePose pose, JointMap map)
         {
-            BodyJoints? body = BodyJoints.Find(pose.Skeleton, map);
-            if (body == null) return null;
+            if (!(FindBody(pose.Skeleton, map) is { } body)) return null;
             Vector3D feet = Vector3D.Zero;
             foreach (int f in body.Feet) feet = feet + pose.GlobalPosition(f);
             Vector3D v = pose.GlobalPosition(body.Head) - (1.0 / body.Feet.Length) * feet;
@@ -103,8 +102,7 @@ namespace DeltaInterpolator.Core.Retargeting
         private static double[]? Scores(MotionClip motion, JointMap map, Vector3D[] axes)
         {
             Skeleton skeleton = motion.Skeleton;
-            BodyJoints? body = BodyJoints.Find(skeleton, map);
-            if (body == null || !(body.LegLength > 0) || motion.FrameCount == 0) return null;
+            if (!(FindBody(skeleton, map) is { } body) || !(body.LegLength > 0) || motion.FrameCount == 0) return null;
             int joints = skeleton.JointCount;
             int samples = Math.Min(motion.FrameCount, MaxSampledFrames);
             var globalPositions = new double[3 * joints];
@@ -158,54 +156,37 @@ namespace DeltaInterpolator.Core.Retargeting
 
         private static double Percentile(double[] sorted, double p) => sorted[(int)Math.Round(p * (sorted.Length - 1))];
 
-        /// <summary>The joints detection reads, found through a joint map's chains.</summary>
-        private sealed class BodyJoints
+        /// <summary>
+        /// The joints detection reads, found through a joint map's chains, and the rest skeleton's bone lengths summed
+        /// from the hips down to the first foot (pose-free); null when the map finds no hips, head or foot.
+        /// </summary>
+        private static (int Hips, int Head, int[] Feet, double LegLength)? FindBody(Skeleton skeleton, JointMap map)
         {
-            private BodyJoints(int hips, int head, int[] feet, double legLength)
+            int hips = Last(skeleton, map, "Hips"), head = Last(skeleton, map, "Head");
+            var feet = new List<int>();
+            foreach (string name in new[] { "LeftFoot", "RightFoot", "LeftToe", "RightToe" })
             {
-                Hips = hips;
-                Head = head;
-                Feet = feet;
-                LegLength = legLength;
+                int f = Last(skeleton, map, name);
+                if (f >= 0) feet.Add(f);
             }
 
-            public int Hips { get; }
-
-            public int Head { get; }
-
-            public int[] Feet { get; }
-
-            /// <summary>The rest skeleton's bone lengths summed from the hips down to the first foot (pose-free).</summary>
-            public double LegLength { get; }
-
-            public static BodyJoints? Find(Skeleton skeleton, JointMap map)
+            if (hips < 0 || head < 0 || feet.Count == 0) return null;
+            double length = 0;
+            ReadOnlySpan<double> offsets = skeleton.OffsetSpan;
+            for (int j = feet[0]; j != hips; j = skeleton.Parents[j])
             {
-                int hips = Last(skeleton, map, "Hips"), head = Last(skeleton, map, "Head");
-                var feet = new List<int>();
-                foreach (string name in new[] { "LeftFoot", "RightFoot", "LeftToe", "RightToe" })
-                {
-                    int f = Last(skeleton, map, name);
-                    if (f >= 0) feet.Add(f);
-                }
-
-                if (hips < 0 || head < 0 || feet.Count == 0) return null;
-                double length = 0;
-                ReadOnlySpan<double> offsets = skeleton.OffsetSpan;
-                for (int j = feet[0]; j != hips; j = skeleton.Parents[j])
-                {
-                    if (j < 0) return null;
-                    length += Vector3D.Read(offsets, 3 * j).Length;
-                }
-
-                return new BodyJoints(hips, head, feet.ToArray(), length);
+                if (j < 0) return null;
+                length += Vector3D.Read(offsets, 3 * j).Length;
             }
 
-            private static int Last(Skeleton skeleton, JointMap map, string target)
-            {
-                IReadOnlyList<string>? chain = map.SourceChain(target);
-                int[]? found = chain == null ? null : JointMap.FindChain(skeleton, chain);
-                return found == null ? -1 : found[found.Length - 1];
-            }
+            return (hips, head, feet.ToArray(), length);
+        }
+
+        private static int Last(Skeleton skeleton, JointMap map, string target)
+        {
+            IReadOnlyList<string>? chain = map.SourceChain(target);
+            int[]? found = chain == null ? null : JointMap.FindChain(skeleton, chain);
+            return found == null ? -1 : found[found.Length - 1];
         }
     }
 }
