@@ -67,11 +67,20 @@ namespace DeltaInterpolator.Unity
         /// </summary>
         public AnimatorLayerState[] Read()
         {
+            // A controller assigned or swapped after the build may have fewer layers (none without a controller): those read as
+            // not in transition rather than asking the Animator about a layer it lacks (it logs an error each time).
+            int layers = _animator.layerCount;
             for (int i = 0; i < _states.Length; i++)
             {
                 int layer = _states[i].Layer;
-                AnimatorStateInfo current = _animator.GetCurrentAnimatorStateInfo(layer);
                 ref AnimatorLayerState s = ref _states[i];
+                if (layer >= layers)
+                {
+                    s.InTransition = false;
+                    continue;
+                }
+
+                AnimatorStateInfo current = _animator.GetCurrentAnimatorStateInfo(layer);
                 s.StateHash = current.fullPathHash;
                 s.TagHash = current.tagHash;
                 s.InTransition = _animator.IsInTransition(layer);
