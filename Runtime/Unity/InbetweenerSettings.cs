@@ -68,8 +68,9 @@ namespace DeltaInterpolator.Unity
         private bool lockFeet = true;
 
         [SerializeField]
-        [Tooltip("Neural Animator transitions: per controller layer, the Animator's own transitions (within a duration range, filtered by state tags) become in-betweens that end on the next state's pose. Empty: every transition stays a crossfade.")]
-        private NeuralTransitionLayer[] neuralTransitions = new NeuralTransitionLayer[0];
+        [Tooltip("Neural Animator transitions: per controller layer, the Animator's own transitions (within a duration range, filtered by state tags) become in-betweens that end on the next state's pose. Empty, or every entry disabled (the default: the base layer, off): every transition stays a crossfade.")]
+        // One entry for the base layer, off: the inspector shows the switch, and nothing changes until it is ticked.
+        private NeuralTransitionLayer[] neuralTransitions = { new NeuralTransitionLayer { layer = 0, enabled = false } };
 
         /// <summary>The model.</summary>
         public InbetweeningModel? Model => model;
@@ -114,7 +115,8 @@ namespace DeltaInterpolator.Unity
         public bool LockFeet => lockFeet;
 
         /// <summary>
-        /// Neural Animator transitions, one entry per controller layer (empty: the controller's transitions stay crossfades).
+        /// Neural Animator transitions, one entry per controller layer (none enabled: the controller's transitions stay crossfades; new
+        /// settings hold the base layer's entry, disabled).
         /// The component reads them when it starts and when they are edited.
         /// </summary>
         public NeuralTransitionLayer[] NeuralTransitions => neuralTransitions ?? new NeuralTransitionLayer[0];

@@ -228,14 +228,19 @@ namespace DeltaInterpolator.Unity
 
         private void FixedUpdate() => Tick(FrameCallback.FixedUpdate);
 
-        // Gather what Unity read, one call into Core's character, write its output into the job.
+        // Gather what Unity read, one call into Core's character, the binder carries out its output (pose, state to sample, state to play).
         private void Tick(FrameCallback callback)
         {
             if (_character == null || _binder == null || _animator == null) return;
             CharacterFrameInput input = _binder.Gather(callback);
             CharacterFrameOutput frame;
             using (s_Frame.Auto()) frame = _character.Frame(input, _binder.Shown, _binder.Sampled);
-            if (_binder.Apply(frame)) return;
+            if (!_binder.Apply(frame)) Failed(frame);
+        }
+
+        // The inference engine failed in this frame (once: the component stops).
+        private void Failed(in CharacterFrameOutput frame)
+        {
             // The shared model is broken: the next character to enable loads it afresh.
             if (_build != null) SharedSchedulers.Discard(_build.Scheduler);
             Stop(frame.FailureReason!, frame.Error);

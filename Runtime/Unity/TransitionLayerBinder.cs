@@ -11,9 +11,10 @@ namespace DeltaInterpolator.Unity
     /// <summary>
     /// Binds a character's frame to its animation job, the way Animation Rigging binds constraint data to its jobs:
     /// it owns the job's buffers and the playable graph, creates the <see cref="TransitionLayerJob"/> over them as a
-    /// layer after the Animator Controller (and a clip target reader just before it), copies each
-    /// <see cref="CharacterFrameOutput"/> in, and hands back what the job read (the pose shown, the controller's root
-    /// velocity, a sampled target). Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
+    /// layer after the Animator Controller (and, just before it, the readers of clip and Animator state targets), carries out
+    /// each <see cref="CharacterFrameOutput"/> (the pose into the job, a state to sample, a hand-off's state for the Animator to
+    /// play), and hands back what was read (the pose shown, the controller's root velocity, a sampled target, the watched
+    /// layers' state machines). Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
     internal sealed class TransitionLayerBinder : IDisposable
     {
@@ -29,7 +30,8 @@ namespace DeltaInterpolator.Unity
         private readonly Animator _animator;
         private readonly AnimatorTransitionWatcher _watcher;
         private bool _stateTargetLatest;
-        // A hand-off's state the Animator was told to play last frame, to check it did (0: none pending).
+        // A hand-off's state the Animator was told to play last frame, to check at the next frame that it did.
+        private bool _playPending;
         private int _playedState;
         private int _playedLayer;
         private bool _warnedPlay;
@@ -102,7 +104,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>What Unity read for this frame callback: its clock, where the character stands, the controller's root velocity the job saw, the watched layers' state machines.</summary>
         public CharacterFrameInput Gather(FrameCallback callback)
         {
-            if (_playedState != 0) CheckPlayed();
+            if (_playPending) CheckPlayed();
             AnimatorLayerState[] layers = _watcher.Read();
             return new CharacterFrameInput
             {
@@ -133,6 +135,7 @@ namespace DeltaInterpolator.Unity
             if (frame.PlayState)
             {
                 _animator.PlayInFixedTime(frame.Play.StateHash, frame.Play.Layer, (float)frame.Play.Seconds);
+                _playPending = true;
                 _playedState = frame.Play.StateHash;
                 _playedLayer = frame.Play.Layer;
             }
@@ -146,11 +149,10 @@ namespace DeltaInterpolator.Unity
         {
             AnimatorStateInfo current = _animator.GetCurrentAnimatorStateInfo(_playedLayer);
             bool entered = current.fullPathHash == _playedState || current.shortNameHash == _playedState;
-            int hash = _playedState;
-            _playedState = 0;
+            _playPending = false;
             if (entered || _warnedPlay) return;
             _warnedPlay = true;
-            Debug.LogWarning($"{_animator.name}: the Animator was told to play the hand-off's state (hash {hash}, layer {_playedLayer}) in the frame the transition arrived, but it shows another state after the animation update; expected it to play on in that state (a script calling Play in the same frame overrides the hand-off; a culled Animator plays it when it is visible again)", _animator);
+            Debug.LogWarning($"{_animator.name}: the Animator was told to play the hand-off's state (hash {_playedState}, layer {_playedLayer}) in the frame the transition arrived, but it shows another state after the animation update; expected it to play on in that state (a script calling Play in the same frame overrides the hand-off; a culled Animator plays it when it is visible again)", _animator);
         }
 
         private void Write(in CharacterFrameOutput frame)

@@ -23,7 +23,10 @@ namespace DeltaInterpolator.Tests.Unity
         [Test]
         public void DefaultsKeepEveryCrossfade()
         {
-            Assert.That(_settings.NeuralTransitions, Is.Empty);
+            // The base layer's entry is there to tick, and off.
+            Assert.That(_settings.NeuralTransitions, Has.Length.EqualTo(1));
+            Assert.That(_settings.NeuralTransitions[0].layer, Is.EqualTo(0));
+            Assert.That(_settings.NeuralTransitions[0].enabled, Is.False);
             var layer = new NeuralTransitionLayer();
             Assert.That(layer.layer, Is.EqualTo(0));
             Assert.That(layer.enabled, Is.True);
@@ -53,7 +56,8 @@ namespace DeltaInterpolator.Tests.Unity
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => _settings.SetNeuralTransitions(new[] { entry }));
             Assert.That(e!.ParamName, Is.EqualTo(parameter));
             Assert.That(e.Message, Does.Contain("expected"));
-            Assert.That(_settings.NeuralTransitions, Is.Empty, "a refused value changes nothing");
+            Assert.That(_settings.NeuralTransitions[0].enabled, Is.False, "a refused value changes nothing");
+            Assert.That(_settings.NeuralTransitions[0].minSeconds, Is.EqualTo(0f), "a refused value changes nothing");
         }
 
         [Test]
@@ -61,7 +65,7 @@ namespace DeltaInterpolator.Tests.Unity
         {
             var e = Assert.Throws<ArgumentException>(() => _settings.SetNeuralTransitions(new[] { new NeuralTransitionLayer(), new NeuralTransitionLayer() }));
             Assert.That(e!.ParamName, Is.EqualTo("layers[1].layer"));
-            Assert.That(_settings.NeuralTransitions, Is.Empty);
+            Assert.That(_settings.NeuralTransitions, Has.Length.EqualTo(1), "a refused value changes nothing");
         }
 
         [Test]
