@@ -93,18 +93,18 @@ namespace DeltaInterpolator.Unity
         /// <exception cref="ArgumentNullException"><paramref name="clip"/> is null.</exception>
         /// <exception cref="ArgumentOutOfRangeException"><paramref name="clipTime"/> negative or not finite; <paramref name="seconds"/> NaN or longer than the model spans.</exception>
         /// <exception cref="InvalidOperationException">The component is not running (disabled, or its model failed to load).</exception>
-        public int RequestTransition(AnimationClip clip, float clipTime, float seconds = 0) => Running().Clip(clip, clipTime, seconds);
+        public int RequestTransition(AnimationClip clip, float clipTime, float seconds = 0) => CharacterRequests.RequestClip(this, clip, clipTime, seconds);
 
         /// <summary><see cref="RequestTransition(AnimationClip, float, float)"/>with the length in model frames (the model's rate, <see cref="ModelFrameRate"/>). Named
         /// apart from it on purpose: as an overload, <c>RequestTransition(clip, 0.2f, 1)</c>meant one frame (33 ms), not one second.</summary>
         /// <exception cref="ArgumentOutOfRangeException"><paramref name="modelFrames"/> below 1.</exception>
-        public int RequestTransitionInFrames(AnimationClip clip, float clipTime, int modelFrames) => Running().Clip(clip, clipTime, Running().FramesToSeconds(modelFrames));
+        public int RequestTransitionInFrames(AnimationClip clip, float clipTime, int modelFrames) => CharacterRequests.RequestClipInFrames(this, clip, clipTime, modelFrames);
 
         /// <summary>Transition to a pose: the root bone's local position and every bone's local rotation, in the order of <see cref="Bones"/>, arriving in <paramref
         /// name="seconds"/>(≤ 0: the settings' default); then the controller takes back over (blend-out). The root bone's position is relative to where the character
         /// stands now (with root motion on, a position 2 m ahead sends the character 2 m ahead).</summary>
-        /// <exception cref="ArgumentException"><paramref name="localRotations"/> does not hold one rotation per bone.</exception>
-        public int RequestTransition(Vector3 rootPosition, Quaternion[] localRotations, float seconds = 0) => Running().Pose(rootPosition, localRotations, seconds);
+        /// <exception cref="ArgumentException"><paramref name="localRotations"/> is null or does not hold one rotation per bone; <paramref name="seconds"/> NaN.</exception>
+        public int RequestTransition(Vector3 rootPosition, Quaternion[] localRotations, float seconds = 0) => CharacterRequests.RequestPose(this, rootPosition, localRotations, seconds);
 
         /// <summary>Hand over to an Animator state: transition to the pose state <paramref name="stateName"/>(its name, or full path such as
         /// <c>"Base Layer.Roll"</c>) of <paramref name="layer"/>shows <paramref name="timeInState"/>seconds in, arriving in <paramref name="seconds"/>(≤ 0: the
@@ -117,18 +117,18 @@ namespace DeltaInterpolator.Unity
         /// finite, <paramref name="seconds"/> NaN or longer than the model spans.</exception>
         /// <exception cref="InvalidOperationException">The component is not running, or the Animator has no controller.</exception>
         public int RequestTransition(string stateName, int layer, float timeInState, float seconds = 0) =>
-            Running().State(StateHash(stateName), nameof(stateName), layer, timeInState, seconds);
+            CharacterRequests.RequestState(this, StateHash(stateName), nameof(stateName), layer, timeInState, seconds);
 
         /// <summary><see cref="RequestTransition(string, int, float, float)"/>with the state's hash (<c>Animator.StringToHash</c> of its name or full path).</summary>
-        public int RequestTransition(int stateHash, int layer, float timeInState, float seconds = 0) => Running().State(stateHash, nameof(stateHash), layer, timeInState, seconds);
+        public int RequestTransition(int stateHash, int layer, float timeInState, float seconds = 0) => CharacterRequests.RequestState(this, stateHash, nameof(stateHash), layer, timeInState, seconds);
 
         /// <summary><see cref="RequestTransition(string, int, float, float)"/>with the length in model frames (<see cref="ModelFrameRate"/>).</summary>
         public int RequestTransitionInFrames(string stateName, int layer, float timeInState, int modelFrames) =>
-            Running().State(StateHash(stateName), nameof(stateName), layer, timeInState, Running().FramesToSeconds(modelFrames));
+            CharacterRequests.RequestStateInFrames(this, StateHash(stateName), nameof(stateName), layer, timeInState, modelFrames);
 
         /// <summary><see cref="RequestTransition(int, int, float, float)"/>with the length in model frames (<see cref="ModelFrameRate"/>).</summary>
         public int RequestTransitionInFrames(int stateHash, int layer, float timeInState, int modelFrames) =>
-            Running().State(stateHash, nameof(stateHash), layer, timeInState, Running().FramesToSeconds(modelFrames));
+            CharacterRequests.RequestStateInFrames(this, stateHash, nameof(stateHash), layer, timeInState, modelFrames);
 
         /// <summary>Ends the current transition at once (the controller's pose shows from the next frame).</summary>
         public void Cancel() => _character?.Cancel();
@@ -266,7 +266,9 @@ namespace DeltaInterpolator.Unity
             _binder = null;
         }
 
-        private CharacterRequests Running()
+        /// <summary>The running component's requests; initialises first when settings arrived since the last frame.</summary>
+        /// <exception cref="InvalidOperationException">The component is not running (disabled, or its model failed to load).</exception>
+        internal CharacterRequests Running()
         {
             // Settings assigned through serialization or edited this frame: initialise now rather than at the next Update.
             if (_isEnabled && _settingsChanged) ApplySettingsChange();
