@@ -58,6 +58,9 @@ namespace DeltaInterpolator.Unity
             transitions.Message += Warn;
         }
 
+        /// <summary>True when at least one layer is watched (its transitions may become neural).</summary>
+        public bool Watching => _layers.Length > 0;
+
         /// <summary>One flag per driven bone: true where a masked layer above drives it (it keeps that layer's pose); null: no mask.</summary>
         public bool[]? KeptBones { get; }
 

@@ -64,6 +64,8 @@ namespace DeltaInterpolator.Unity
                 // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
                 var watcher = new AnimatorTransitionWatcher(animator, s.NeuralTransitions, character.Transitions, bones, component);
                 var binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
+                // Neural transitions read states at their first transition: the controller copy is made now, not in that frame.
+                if (watcher.Watching) binder.States.Warm();
                 var requests = new CharacterRequests(character, binder, animator, s, component, bones.Length);
                 return new CharacterBuild(scheduler, character, binder, watcher, requests, bones, playback, SettingsSnapshot.Take(s));
             }

@@ -19,8 +19,8 @@ namespace DeltaInterpolator.Unity
     /// editor data), but a controller playable evaluates any state of its controller — a single clip, or a 1D/2D
     /// blend tree at the parameters it is given — exactly as the character's own Animator does. A state → motion table
     /// written by the editor would go stale whenever the controller is edited and would re-implement blend trees.</para>
-    /// <para>What it costs: one controller instance per character (created at the first state request, again when the
-    /// Animator's controller changes), whose state machine updates every frame at speed 0 (its clock never moves, so
+    /// <para>What it costs: one controller instance per character (created when the component starts with neural Animator
+    /// transitions on, otherwise at the first state request; again when the Animator's controller changes), whose state machine updates every frame at speed 0 (its clock never moves, so
     /// its states stay where they were put and its clips' events never fire), and one evaluation of its pose in a frame
     /// that reads a target (the reader does not process its input otherwise). Layers other than the requested one are
     /// weighted 0, so the target is the state's own pose; bones a masked layer above drives keep that layer's pose
@@ -105,6 +105,15 @@ namespace DeltaInterpolator.Unity
             if (_warned || entered.fullPathHash == _stateHash || entered.shortNameHash == _stateHash) return;
             _warned = true;
             Debug.LogWarning($"{_animator.name}: the Motion Inbetweener's state reader was not in the requested state (hash {_stateHash}, layer {_layer}) when it read the target pose, so the transition's target is another state's pose; expected the controller copy to enter the state in the same evaluation (please report it with your Unity version)", _animator);
+        }
+
+        /// <summary>
+        /// Creates the controller instance now rather than at the first request (a character with neural Animator transitions
+        /// needs it at its first transition: making it then would cost that frame); nothing without a controller.
+        /// </summary>
+        public void Warm()
+        {
+            if (_animator.runtimeAnimatorController != null) Prepare();
         }
 
         /// <summary>Creates the controller instance at the first request, and again when the Animator's controller changed since.</summary>

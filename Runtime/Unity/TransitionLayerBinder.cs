@@ -131,7 +131,8 @@ namespace DeltaInterpolator.Unity
         public bool Apply(in CharacterFrameOutput frame)
         {
             if (frame.Played) Write(frame);
-            if (frame.SampleState) SampleState(frame.Sample);
+            // A controller removed since the transition started leaves nothing to read: the deferred request waits until a newer one replaces it.
+            if (frame.SampleState && _animator.runtimeAnimatorController != null) SampleState(frame.Sample);
             if (frame.PlayState)
             {
                 _animator.PlayInFixedTime(frame.Play.StateHash, frame.Play.Layer, (float)frame.Play.Seconds);
