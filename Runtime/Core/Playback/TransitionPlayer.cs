@@ -229,15 +229,17 @@ namespace DeltaInterpolator.Core.Playback
             return _deferredId;
         }
 
-        /// <summary>The id of the request waiting for its target pose (0: none).</summary>
+        /// <summary>The id of the request waiting for its target pose (0: none), and the frame time it arrives at (the engine samples where the character will be then).</summary>
         public int DeferredRequestId => _deferredId;
+
+        /// <inheritdoc cref="DeferredRequestId"/>
+        public double DeferredArrivalTime => _deferredArrival;
 
         /// <summary>True when the current request lets go on arrival (a hand-off) rather than blending out.</summary>
         public bool LetsGoOnArrival => _letGo;
 
         // The hand-off request that arrived in this frame (0: none), and how late its frame came after the target time.
         internal int LetGoArrivedId => _letGoArrived;
-
         internal double LetGoLateSeconds => _letGoLate;
 
         /// <summary>The model's contract (trained gaps, span), for the types that decide what to request.</summary>
