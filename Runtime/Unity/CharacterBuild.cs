@@ -14,11 +14,13 @@ namespace DeltaInterpolator.Unity
     /// </summary>
     internal sealed class CharacterBuild : IDisposable
     {
-        private CharacterBuild(TransitionScheduler scheduler, TransitionCharacter character, TransitionLayerBinder binder, Transform[] bones, PlaybackSettings playback, SettingsSnapshot built)
+        private CharacterBuild(TransitionScheduler scheduler, TransitionCharacter character, TransitionLayerBinder binder, AnimatorTransitionWatcher watcher, CharacterRequests requests, Transform[] bones, PlaybackSettings playback, SettingsSnapshot built)
         {
             Scheduler = scheduler;
             Character = character;
             Binder = binder;
+            Watcher = watcher;
+            Requests = requests;
             Bones = bones;
             Playback = playback;
             Built = built;
@@ -30,6 +32,12 @@ namespace DeltaInterpolator.Unity
 
         public TransitionLayerBinder Binder { get; }
 
+        /// <summary>Neural Animator transitions: the watched layers' state machines read for Core each frame.</summary>
+        public AnimatorTransitionWatcher Watcher { get; }
+
+        /// <summary>The requests game code makes (clip, pose, hand-off into a state).</summary>
+        public CharacterRequests Requests { get; }
+
         /// <summary>The bones driven, the root bone first.</summary>
         public Transform[] Bones { get; }
 
@@ -40,7 +48,7 @@ namespace DeltaInterpolator.Unity
         public SettingsSnapshot Built { get; }
 
         /// <summary>Builds from <paramref name="s"/>; refuses (with what to do) a missing model or engine and a rig that cannot be mapped.</summary>
-        public static CharacterBuild Create(Animator animator, InbetweenerSettings s, string graphName, ushort sortingOrder)
+        public static CharacterBuild Create(Animator animator, InbetweenerSettings s, MotionInbetweener component, string graphName, ushort sortingOrder)
         {
             IInferenceBackendFactory factory = Engine(s, out InbetweeningModel model);
             TransitionScheduler scheduler = SharedSchedulers.Acquire(model, factory);
@@ -52,8 +60,12 @@ namespace DeltaInterpolator.Unity
                 var playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames, LockFeet = s.LockFeet };
                 var character = new TransitionCharacter(converter, scheduler, playback, rig.Armature, model.name, factory.Name);
                 // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
-                var binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder);
-                return new CharacterBuild(scheduler, character, binder, bones, playback, SettingsSnapshot.Take(s));
+                var watcher = new AnimatorTransitionWatcher(animator, s.NeuralTransitions, character.Transitions, bones, component);
+                var binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
+                // Neural transitions read states at their first transition: the controller copy is made now, not in that frame.
+                if (watcher.Watching) binder.States.Warm();
+                var requests = new CharacterRequests(character, binder, animator, s, component, bones.Length);
+                return new CharacterBuild(scheduler, character, binder, watcher, requests, bones, playback, SettingsSnapshot.Take(s));
             }
             catch
             {

@@ -71,6 +71,11 @@ namespace DeltaInterpolator.Unity
         [Tooltip("Load the model as soon as a scene that uses these settings has loaded (a character in it, or a prefab a spawner in it references), so the first character to start later does not wait for a synchronous load mid-game. Off: the first character to start loads it.")]
         private bool loadOnAwake = true;
 
+        [SerializeField]
+        [Tooltip("Neural Animator transitions: per controller layer, the Animator's own transitions (within a duration range, filtered by state tags) become in-betweens that end on the next state's pose. Empty, or every entry disabled (the default: the base layer, off): every transition stays a crossfade.")]
+        // One entry for the base layer, off: the inspector shows the switch, and nothing changes until it is ticked.
+        private NeuralTransitionLayer[] neuralTransitions = { new NeuralTransitionLayer { layer = 0, enabled = false } };
+
         /// <summary>The model.</summary>
         public InbetweeningModel? Model => model;
 
@@ -138,6 +143,39 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>Whether transitions hold planted feet still (<see cref="Core.Playback.PlaybackSettings.LockFeet"/>).</summary>
         public bool LockFeet => lockFeet;
+
+        /// <summary>
+        /// Neural Animator transitions, one entry per controller layer (none enabled: the controller's transitions stay crossfades; new
+        /// settings hold the base layer's entry, disabled).
+        /// The component reads them when it starts and when they are edited.
+        /// </summary>
+        public NeuralTransitionLayer[] NeuralTransitions => neuralTransitions ?? new NeuralTransitionLayer[0];
+
+        /// <summary>Replaces <see cref="NeuralTransitions"/> from code (e.g. for settings made with <c>CreateInstance</c>); components using the asset apply it at their next frame.</summary>
+        /// <exception cref="ArgumentNullException"><paramref name="layers"/> or an entry of it is null.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">An entry has a negative layer or duration, or a range whose end is below its start (the parameter names the entry and field).</exception>
+        /// <exception cref="ArgumentException">Two entries name the same layer.</exception>
+        public void SetNeuralTransitions(NeuralTransitionLayer[] layers)
+        {
+            CheckNeuralTransitions(layers, nameof(layers));
+            neuralTransitions = (NeuralTransitionLayer[])layers.Clone();
+            Changed?.Invoke(this);
+        }
+
+        /// <summary>Refuses entries no controller could meet, naming the entry and field (<paramref name="name"/>[i].field).</summary>
+        internal static void CheckNeuralTransitions(NeuralTransitionLayer[] layers, string name)
+        {
+            if (layers == null) throw new ArgumentNullException(name);
+            for (int i = 0; i < layers.Length; i++)
+            {
+                NeuralTransitionLayer layer = layers[i] ?? throw new ArgumentNullException($"{name}[{i}]", "expected an entry, not null");
+                layer.Check($"{name}[{i}]");
+                for (int j = 0; j < i; j++)
+                {
+                    if (layers[j].layer == layer.layer) throw new ArgumentException($"entries {j} and {i} both name controller layer {layer.layer}; expected one entry per layer", $"{name}[{i}].layer");
+                }
+            }
+        }
 
         /// <summary>Raised when a field is edited (inspector, undo) in the Editor; components using the asset apply the change.</summary>
         internal event Action<InbetweenerSettings>? Changed;
