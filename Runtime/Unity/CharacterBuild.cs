@@ -52,6 +52,7 @@ namespace DeltaInterpolator.Unity
         {
             IInferenceBackendFactory factory = Engine(s, out InbetweeningModel model);
             TransitionScheduler scheduler = SharedSchedulers.Acquire(model, factory);
+            TransitionLayerBinder? binder = null;
             try
             {
                 ModelContract contract = scheduler.Contract;
@@ -61,7 +62,7 @@ namespace DeltaInterpolator.Unity
                 var character = new TransitionCharacter(converter, scheduler, playback, rig.Armature, model.name, factory.Name);
                 // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
                 var watcher = new AnimatorTransitionWatcher(animator, s.NeuralTransitions, character.Transitions, bones, component);
-                var binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
+                binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
                 // Neural transitions read states at their first transition: the controller copy is made now, not in that frame.
                 if (watcher.Watching) binder.States.Warm();
                 var requests = new CharacterRequests(character, binder, animator, s, component, bones.Length);
@@ -69,6 +70,9 @@ namespace DeltaInterpolator.Unity
             }
             catch
             {
+                // Whatever failed (the component stops once, PlaybackStatus.TryStart), nothing built so far is left behind: the
+                // binder's graph and native buffers, and this character's hold on the model.
+                binder?.Dispose();
                 SharedSchedulers.Release(scheduler);
                 throw;
             }
