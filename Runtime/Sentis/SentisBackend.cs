@@ -279,6 +279,10 @@ namespace DeltaInterpolator.Sentis
                     copy.ReadbackRequest();
                 }
 
+                // Sentis CPU schedules Burst jobs (the run, then the copies) into the job system's batch, which starts them only
+                // when flushed: flush now so they start at once on the worker threads, rather than at the next poll of their fence
+                // (JobHandle.IsCompleted flushes too, unity:Runtime/Jobs/ScriptBindings/JobHandle.bindings.cs), a frame later in a game.
+                if (_owner.BackendType == BackendType.CPU) JobHandle.ScheduleBatchedJobs();
                 _scheduled = true;
             }
 
@@ -339,10 +343,6 @@ namespace DeltaInterpolator.Sentis
                 }
 
                 worker.Schedule();
-                // Sentis CPU schedules Burst jobs into the job system's batch, which starts them only when flushed: flush now so the
-                // run starts at once on the worker threads, rather than at the next poll of its fence (JobHandle.IsCompleted flushes
-                // too, unity:Runtime/Jobs/ScriptBindings/JobHandle.bindings.cs), a frame later in a game.
-                if (_owner.BackendType == BackendType.CPU) JobHandle.ScheduleBatchedJobs();
                 if (_deviceOutput)
                 {
                     // Copied on the device at once: it stays there for Core's handle, past the worker's next run.
