@@ -19,9 +19,10 @@ namespace DeltaInterpolator.Unity
         private readonly UnityEngine.Object _context;
         private readonly LayerTransitionSettings[] _layers;
         private readonly AnimatorLayerState[] _states;
+        private bool _warnedLayer;
 
         /// <summary>Watches the layers <paramref name="entries"/> name on <paramref name="transitions"/>; refuses entries no controller could meet.</summary>
-        /// <exception cref="ArgumentOutOfRangeException">An entry's layer is beyond the controller's layers, or its values are out of range (named by entry and field).</exception>
+        /// <exception cref="ArgumentOutOfRangeException">An entry's values are out of range (named by entry and field).</exception>
         public AnimatorTransitionWatcher(Animator animator, NeuralTransitionLayer[] entries, AnimatorTransitions transitions, Transform[] bones, UnityEngine.Object context)
         {
             const string name = "neuralTransitions";
@@ -38,9 +39,8 @@ namespace DeltaInterpolator.Unity
             {
                 NeuralTransitionLayer entry = entries[i];
                 if (!entry.enabled) continue;
-                // Without a controller yet the layer count is unknown; the controller's own range is checked once there is one.
-                int layers = animator.runtimeAnimatorController != null ? animator.layerCount : int.MaxValue;
-                if (entry.layer >= layers) throw new ArgumentOutOfRangeException($"{name}[{i}].layer", entry.layer, $"expected a layer of the Animator Controller (0–{layers - 1})");
+                // A layer beyond the controller's is not refused here: the component may start before the Animator has read its
+                // controller (its layer count is 0 until then), and the controller may be assigned or swapped later. Read() says it once.
                 var settings = new LayerTransitionSettings(entry.layer)
                 {
                     MinSeconds = entry.minSeconds,
@@ -80,6 +80,7 @@ namespace DeltaInterpolator.Unity
                 if (layer >= layers)
                 {
                     s.InTransition = false;
+                    if (layers > 0 && !_warnedLayer) WarnLayer(layer, layers);
                     continue;
                 }
 
@@ -124,6 +125,12 @@ namespace DeltaInterpolator.Unity
                     settings.OptedOut.Add(stateHash);
                 }
             }
+        }
+
+        private void WarnLayer(int layer, int layers)
+        {
+            _warnedLayer = true;
+            Debug.LogWarning($"{_context.name}: the settings' Neural Transitions name controller layer {layer}, but the Animator Controller has layers 0–{layers - 1}; that entry's transitions stay crossfades. Expected a layer of the controller (fix Layer in the settings' Neural Transitions)", _context);
         }
 
         private void Warn(string message) => Debug.LogWarning($"{_context.name}: {message}", _context);

@@ -68,6 +68,7 @@ namespace DeltaInterpolator.Unity
         public void Sample(int stateHash, int layer, float timeInState)
         {
             Prepare();
+            if (_animator.parameterCount != _parameterHashes.Length) CacheParameters();
             for (int p = 0; p < _parameterHashes.Length; p++)
             {
                 int hash = _parameterHashes[p];
@@ -129,6 +130,13 @@ namespace DeltaInterpolator.Unity
             _controllerPlayable.SetSpeed(0);
             _graph.Connect(_controllerPlayable, 0, _reader, 0);
             _controller = controller;
+            CacheParameters();
+        }
+
+        // The parameters' hashes and types, read once (reading them allocates); again when their count changes, e.g. when the copy
+        // was made before the Animator had read its controller (warmed at start), when it reports none.
+        private void CacheParameters()
+        {
             int count = _animator.parameterCount;
             _parameterHashes = new int[count];
             _parameterTypes = new AnimatorControllerParameterType[count];

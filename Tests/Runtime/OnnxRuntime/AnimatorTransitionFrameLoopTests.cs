@@ -77,7 +77,20 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
-        public void AnInterruptionStartsANewInbetweenFromThePoseShown()
+        public void AnInterruptionStartsANewInbetweenFromThePoseShown() => Interruption();
+
+        // Issue 27's turn bound on an interruption, as written: NOT met, for the reason given at HandOffFrameLoopTests.AHandOffStaysWithinTheTurnBound
+        // (the walking in-between's gait phase is not its references'). Measured worst step: 180 % of the bound (the left foot, 4.5° against 2.5°).
+        [Ignore("issue 27's per-step turn bound is not met yet on an interruption between walks (worst 180 % of the bound); kept so it can be run and fail")]
+        [Test]
+        public void AnInterruptionStaysWithinTheTurnBound()
+        {
+            StepBounds bounds = Interruption();
+            Assert.That(bounds.Failures.Where(f => !f.Contains("root speed")), Is.Empty, string.Join("\n", bounds.Failures.Take(20)) + "\n" + bounds);
+        }
+
+        // The interruption, checked; the steps from it to 30 frames after arrival against 1.25 × max(SLERP's, the new next state's own turn) + 0.5°.
+        private static StepBounds Interruption()
         {
             using var loop = new StandInLoop(60, Walking(false));
             loop.Transitions.Watch(new LayerTransitionSettings(0));
@@ -91,12 +104,39 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(first, Is.Not.EqualTo(0));
             loop.Controller.Layer(0).CrossFade(brisk, 0.4, transitionId: 2, nextStart: 0.5);
             double end = loop.Time + 0.4;
+            int bones = loop.Controller.BoneCount;
+            var bounds = new StepBounds();
+            double[] from = (double[])loop.Shown.Rotations.Clone();
+            var target = new double[4 * bones];
+            brisk.Sample(0.9, 0, out _, target, out _, out _);
+            double start = loop.Time;
+            var slerp = new double[4 * bones];
+            var slerpBefore = (double[])from.Clone();
+            var own = new double[4 * bones];
+            var ownBefore = new double[4 * bones];
+            brisk.Sample(0.5, 0, out _, ownBefore, out double bx, out double bz);
+            bounds.Frame(loop.Time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerpBefore, ownBefore, ownBefore, 0);
+            void Measure()
+            {
+                // SLERP from the pose shown at the interruption to the brisk walk's pose at the crossfade's end; the brisk walk's own motion.
+                double f = Math.Min(1, (loop.Time - start) / 0.4);
+                for (int i = 0; i < slerp.Length; i += 4) Quaternions.Normalize(Quaternions.Slerp(QuaternionD.Read(from, i), QuaternionD.Read(target, i), f)).Write(slerp, i);
+                brisk.Sample(0.5 + (loop.Time - start), 0, out _, own, out double x, out double z);
+                double speed = Math.Sqrt((x - bx) * (x - bx) + (z - bz) * (z - bz)) / loop.Step;
+                bounds.Frame(loop.Time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerp, ownBefore, own, speed);
+                Array.Copy(slerp, slerpBefore, slerp.Length);
+                Array.Copy(own, ownBefore, own.Length);
+                (bx, bz) = (x, z);
+            }
+
             loop.Frame();   // reads the interruption: defers the new in-between, asks for the brisk walk's pose
             Assert.That(loop.Last.SampleState, Is.True);
             Assert.That(loop.Last.Weight, Is.EqualTo(1), "the interrupted in-between plays on until the new target is read");
+            Measure();
             double[] keyPose = (double[])loop.Shown.Rotations.Clone();
             double[] keyRoot = (double[])loop.Shown.Root.Clone();
             loop.Frame();   // starts it from the pose shown
+            Measure();
             Assert.That(loop.Player.CurrentRequestId, Is.Not.EqualTo(first));
             Assert.That(loop.Completions.Single(c => c.RequestId == first).ReachedTarget, Is.False, "the interrupted in-between ends unreached");
             Transition keys = loop.Player.CurrentTransition!;
@@ -114,10 +154,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             while (loop.Time + loop.Step < end - 1e-9)
             {
                 loop.Frame();
+                Measure();
                 Assert.That(loop.Last.Weight, Is.EqualTo(1));
             }
 
-            AssertOwnPoseFromNowOn(loop, brisk, "BriskWalk");
+            AssertOwnPoseFromNowOn(loop, brisk, "BriskWalk", Measure);
+            TestContext.Out.WriteLine($"interruption into the brisk walk: {bounds}");
+            return bounds;
         }
 
         [TestCase(0.1)]
@@ -212,12 +255,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         // From the first frame at or after the crossfade's end and for 30 more: weight 0 and the next state's own pose (the controller's).
-        private static void AssertOwnPoseFromNowOn(StandInLoop loop, StandInState next, string name)
+        private static void AssertOwnPoseFromNowOn(StandInLoop loop, StandInState next, string name, Action? measure = null)
         {
             var own = new double[4 * loop.Controller.BoneCount];
             for (int i = 0; i <= FramesAfter; i++)
             {
                 loop.Frame();
+                measure?.Invoke();
                 if (i == 0) Assert.That(loop.Controller.Layer(0).Next, Is.Null, "the crossfade ended in this frame's evaluation");
                 Assert.That(loop.Controller.Layer(0).Current, Is.SameAs(next));
                 Assert.That(loop.Last.Weight, Is.EqualTo(0), $"weight at {loop.Time:F4}");

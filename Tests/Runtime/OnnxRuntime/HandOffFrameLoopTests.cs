@@ -83,7 +83,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             var slerpBefore = (double[])from.Clone();
             double ownTravelBefore = OwnAt(state, stateTime, requestedAt - arrival, ownBefore, out double beforeX, out double beforeZ);
             bounds.Frame(loop.Time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerpBefore, ownBefore, ownBefore, 0);
-            // Diagnostic only: the same steps against the walk the character leaves (its own turn), which the bound leaves out.
+            // Diagnostic only: the same steps also against the walk the character leaves (its own turn), which the bound leaves out.
             var departing = new StepBounds();
             StandInState walk = loop.Controller.States[0];
             var walkNow = new double[4 * bones];
@@ -104,7 +104,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 double ownSpeed = Math.Sqrt((x - beforeX) * (x - beforeX) + (z - beforeZ) * (z - beforeZ)) / loop.Step;
                 bounds.Frame(time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerp, ownBefore, own, ownSpeed);
                 walk.Sample(time, 0, out _, walkNow, out _, out _);
-                departing.Frame(time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerp, walkBefore, walkNow, ownSpeed);
+                // Per bone, the larger of the state's own and the walk's own turn over this step.
+                var largerFrom = new double[own.Length];
+                var largerTo = new double[own.Length];
+                for (int i = 0; i < own.Length; i += 4)
+                {
+                    bool walkLarger = StepBounds.Degrees(QuaternionD.Read(walkBefore, i), QuaternionD.Read(walkNow, i)) > StepBounds.Degrees(QuaternionD.Read(ownBefore, i), QuaternionD.Read(own, i));
+                    Array.Copy(walkLarger ? walkBefore : ownBefore, i, largerFrom, i, 4);
+                    Array.Copy(walkLarger ? walkNow : own, i, largerTo, i, 4);
+                }
+
+                departing.Frame(time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerp, largerFrom, largerTo, ownSpeed);
                 Array.Copy(walkNow, walkBefore, walkNow.Length);
                 Array.Copy(slerp, slerpBefore, slerp.Length);
                 Array.Copy(own, ownBefore, own.Length);
@@ -146,7 +156,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
 
             TestContext.Out.WriteLine($"{stateName} at {stateTime} s in {seconds} s, {fps} fps: {bounds}");
-            TestContext.Out.WriteLine($"  against SLERP and the walk left instead of the state: {departing}");
+            TestContext.Out.WriteLine($"  against SLERP and the larger of the state's and the walk's own turns: {departing}");
             Assert.That(loop.Plays.Count, Is.EqualTo(1), "told to play the state once");
             return bounds;
         }
