@@ -44,6 +44,15 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>The controller's own root velocity last frame (world, per second), as the animation job read it.</summary>
         public double ControllerVelocityX, ControllerVelocityY, ControllerVelocityZ;
+
+        /// <summary>
+        /// The watched controller layers' state machines as the engine read them (its own buffer, the first <see cref="LayerCount"/>
+        /// entries), for <see cref="TransitionCharacter.Transitions"/>; null: no neural Animator transitions.
+        /// </summary>
+        public AnimatorLayerState[]? Layers;
+
+        /// <summary>Entries of <see cref="Layers"/> filled this frame.</summary>
+        public int LayerCount;
     }
 
     /// <summary>
@@ -52,8 +61,9 @@ namespace DeltaInterpolator.Core.Playback
     /// character's own pose buffer, so a binder copies it into the animation job as it is.
     /// </summary>
     /// <remarks>
-    /// Room for the next hand-offs: an instruction to the controller ("play state S at time t" on arrival) or a
-    /// Timeline clip's weight would be one more field here, written by the character and copied by the binder.
+    /// Instructions to the engine's controller ride here too: a state pose to sample off-scene (<see cref="SampleState"/>) and,
+    /// in the frame a hand-off arrives, the state to play (<see cref="PlayState"/>). A Timeline clip's weight would be one more
+    /// field, written by the character and copied by the binder.
     /// </remarks>
     public struct CharacterFrameOutput
     {
@@ -80,5 +90,25 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>True with root motion on: the job blends <see cref="RootVelocityX"/>… over the controller's.</summary>
         public bool RootMotion;
+
+        /// <summary>
+        /// True while a hand-off (<see cref="TransitionCharacter.RequestState"/>, or a controller transition <see cref="AnimatorTransitions"/>
+        /// replaces) waits for its target: the engine samples <see cref="Sample"/>'s pose off-scene (the controller's state at that time,
+        /// with the character's parameters) and hands it to the next <see cref="TransitionCharacter.Frame"/> as the sampled target.
+        /// </summary>
+        public bool SampleState;
+
+        /// <summary>The state whose pose to sample, when <see cref="SampleState"/>.</summary>
+        public StateTarget Sample;
+
+        /// <summary>
+        /// True in the frame a <see cref="TransitionCharacter.RequestState"/> hand-off arrives: the weight is already 0 and the engine puts
+        /// the controller in <see cref="Play"/> now (Unity: <c>Animator.PlayInFixedTime(hash, layer, seconds)</c>), so this frame and the
+        /// next show the state playing on from the in-between's last pose.
+        /// </summary>
+        public bool PlayState;
+
+        /// <summary>The state to play and its time at this frame, when <see cref="PlayState"/>.</summary>
+        public StateTarget Play;
     }
 }

@@ -15,6 +15,21 @@ namespace DeltaInterpolator.Core.Playback
             return $"{durationSeconds:0.###} s is {frames:0} model frames; this model spans at most {longest:0.###} s after {pastFrames} past frames";
         }
 
+        // The model's checks of a request of that length (missing frames as the player counts them): too long is an error, untrained gaps are warnings.
+        public static ModelCheckReport Report(ModelContract c, int pastFrames, double frameRate, double durationSeconds, int missingFrames)
+        {
+            var report = new ModelCheckReport();
+            string? tooLong = TooLong(c, pastFrames, frameRate, durationSeconds);
+            if (tooLong != null)
+            {
+                report.Error(c.Source, tooLong, "expected a shorter transition; split it with an intermediate target");
+                return report;
+            }
+
+            ModelChecks.Request(c, pastFrames, missingFrames, report);
+            return report;
+        }
+
         // A non-finite pose would reach the network's keys and show NaN on the character for the whole transition.
         public static void CheckFinite(ReadOnlySpan<double> root, ReadOnlySpan<double> rotations, string what, string rootName, string rotationsName)
         {

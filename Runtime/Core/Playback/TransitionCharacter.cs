@@ -34,6 +34,10 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _targetRoot = new double[3];
         private readonly double[] _targetRotations;
         private RootFrame _deferredFrame;
+        private StateTarget _sample;
+        private int _sampleId;
+        private StateTarget _handOff;
+        private int _handOffId;
         private double _shownTime;
         private bool _shownPending;
 
@@ -48,6 +52,7 @@ namespace DeltaInterpolator.Core.Playback
         {
             Player = new TransitionPlayer(converter, scheduler, settings);
             RootMotion = new RootMotion(armature);
+            Transitions = new AnimatorTransitions(this);
             _model = modelName ?? throw new ArgumentNullException(nameof(modelName));
             _engine = engineName ?? throw new ArgumentNullException(nameof(engineName));
             int bones = converter.BoneCount;
@@ -66,6 +71,9 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>The character's root motion (the space its poses and targets are in).</summary>
         public RootMotion RootMotion { get; }
+
+        /// <summary>The character's neural Animator transitions (off until a layer is watched): the controller's own transitions it replaces, fed each frame by <see cref="CharacterFrameInput.Layers"/>.</summary>
+        public AnimatorTransitions Transitions { get; }
 
         /// <summary>The character's clock (the Animator's update mode).</summary>
         public AnimationClock Clock => _clock;
@@ -118,6 +126,13 @@ namespace DeltaInterpolator.Core.Playback
 
             Showed(input.Place, input.ApplyRootMotion, shownPose);
             if (sampledTarget.Length == _poseLength && Player.HasDeferredTransition) StartSampledTarget(sampledTarget);
+            // After a sampled target started: a transition the controller starts now defers its own, which the next frame's sample starts.
+            if (input.Layers != null && Transitions.Observe(new ReadOnlySpan<AnimatorLayerState>(input.Layers, 0, Math.Min(input.LayerCount, input.Layers.Length)), out StateTarget next))
+            {
+                _sample = next;
+                _sampleId = Player.DeferredRequestId;
+            }
+
             double time = _clock.Time;
             if (!_status.TryBeginFrame(Player, time, _model, _engine)) return Failure(output);
 
@@ -133,6 +148,16 @@ namespace DeltaInterpolator.Core.Playback
             output.RootVelocityY = velocity.Y;
             output.RootVelocityZ = velocity.Z;
             output.RootMotion = RootMotion.Enabled;
+            output.SampleState = _sampleId != 0 && Player.DeferredRequestId == _sampleId;
+            output.Sample = output.SampleState ? _sample : default;
+            if (_handOffId != 0 && Player.LetGoArrivedId == _handOffId)
+            {
+                // The frame may come after the arrival time: the state plays on from where it is at this frame's time.
+                output.PlayState = true;
+                output.Play = _handOff.At(_handOff.Seconds + Math.Max(0, Player.LetGoLateSeconds));
+                _handOffId = 0;
+            }
+
             _shownTime = time;
             _shownPending = true;
             return output;
@@ -163,6 +188,51 @@ namespace DeltaInterpolator.Core.Playback
         {
             int id = Player.DeferTransition(seconds);
             _deferredFrame = RootMotion.CharacterFrame;
+            return id;
+        }
+
+        /// <summary>
+        /// <see cref="DeferTransition"/> as a hand-off (<see cref="TransitionPlayer.DeferHandOff"/>): from the pose shown at full weight,
+        /// weight 0 from the frame it arrives, when the controller shows the target itself.
+        /// </summary>
+        public int DeferHandOff(double seconds)
+        {
+            int id = Player.DeferHandOff(seconds);
+            _deferredFrame = RootMotion.CharacterFrame;
+            return id;
+        }
+
+        /// <summary>
+        /// A hand-off into a state of the controller: a transition to <paramref name="state"/>'s pose at its time
+        /// (<see cref="StateTarget.Seconds"/>), arriving in <paramref name="seconds"/>. The engine samples that pose off-scene
+        /// (<see cref="CharacterFrameOutput.SampleState"/> says which, in every frame until the pose comes back as the sampled target);
+        /// in the frame it arrives the layer lets go (weight 0, no blend-out) and <see cref="CharacterFrameOutput.PlayState"/> tells
+        /// the engine to put the controller in the state at that time (Unity: <c>Animator.PlayInFixedTime</c>), so the state plays on.
+        /// Call <see cref="Showed"/> first, as for every request.
+        /// </summary>
+        /// <remarks>
+        /// Pose and clip requests (<see cref="RequestTransition"/>, <see cref="DeferTransition"/>) visit their target and blend
+        /// back out to whatever the controller plays over <see cref="PlaybackSettings.BlendOutSeconds"/>; only a hand-off changes what
+        /// the controller plays.
+        /// </remarks>
+        /// <param name="state">The state, its layer and its time at arrival.</param>
+        /// <param name="seconds">Seconds until arrival.</param>
+        /// <param name="controller">What the engine knows of its controller's layers and states.</param>
+        /// <returns>The request's id, as <see cref="TransitionPlayer.TransitionCompleted"/> reports it.</returns>
+        /// <exception cref="ArgumentNullException"><paramref name="controller"/> is null.</exception>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="state"/>'s layer is not a layer of the controller (ParamName <c>state</c>), or <paramref name="seconds"/> is not positive, not finite or longer than the model spans (ParamName <c>durationSeconds</c>).</exception>
+        /// <exception cref="ArgumentException">The controller has no such state on that layer (ParamName <c>state</c>).</exception>
+        public int RequestState(in StateTarget state, double seconds, IControllerStates controller)
+        {
+            if (controller == null) throw new ArgumentNullException(nameof(controller));
+            int layers = controller.LayerCount;
+            if (state.Layer >= layers) throw new ArgumentOutOfRangeException(nameof(state), state.Layer, $"layer {state.Layer} is not a layer of the Animator Controller; expected a layer index in 0..{layers - 1}");
+            if (!controller.HasState(state.Layer, state.StateHash)) throw new ArgumentException($"the Animator Controller has no state of hash {state.StateHash} on layer {state.Layer}; expected the hash of a state's name or full path on that layer (Animator.StringToHash)", nameof(state));
+            int id = DeferHandOff(seconds);
+            _sample = state;
+            _sampleId = id;
+            _handOff = state;
+            _handOffId = id;
             return id;
         }
 

@@ -67,9 +67,11 @@ namespace DeltaInterpolator.Core.Playback
         private double _weight;
         private int _gap;
         private int _neededBefore;
-        private TransitionCompletion? _pendingCompletion;
-        private TransitionCompletion? _pendingInterruption;
-        private TransitionCompletion? _pendingDropped;
+        private CompletionEvents _events;
+        private bool _letGo;
+        private bool _deferredLetGo;
+        private int _letGoArrived;
+        private double _letGoLate;
         private int _deferredId;
         private double _deferredArrival;
 
@@ -163,20 +165,7 @@ namespace DeltaInterpolator.Core.Playback
         /// <summary>The model checks of a request lasting <paramref name="durationSeconds"/> from now: P past frames and the gap it becomes at the model's
         /// frame rate, outside the ranges the model was trained on, are warnings (it runs, but was never taught such requests); see <see
         /// cref="ModelChecks.Request"/>.</summary>
-        public ModelCheckReport CheckRequest(double durationSeconds)
-        {
-            var report = new ModelCheckReport();
-            ModelContract c = _scheduler.Contract;
-            string? tooLong = RequestChecks.TooLong(_scheduler.Contract, PastFrames, FrameRate, durationSeconds);
-            if (tooLong != null)
-            {
-                report.Error(c.Source, tooLong, "expected a shorter transition; split it with an intermediate target");
-                return report;
-            }
-
-            ModelChecks.Request(c, PastFrames, MissingFramesFor(durationSeconds), report);
-            return report;
-        }
+        public ModelCheckReport CheckRequest(double durationSeconds) => RequestChecks.Report(_scheduler.Contract, PastFrames, FrameRate, durationSeconds, MissingFramesFor(durationSeconds));
 
         // Model frames of a duration counted in double: a duration of 1e8 s is 3e9 frames, beyond int (whose cast
         // wrapped round to a short gap that passed every check); capped, as anything past the model's span is refused.
@@ -209,7 +198,7 @@ namespace DeltaInterpolator.Core.Playback
             int missing = CheckRequestable(durationSeconds);
             // A newer request replaces one still waiting for its target pose.
             DropDeferred();
-            return Start(targetRoot, targetRotations, durationSeconds, missing, ++_nextId);
+            return Start(targetRoot, targetRotations, durationSeconds, missing, ++_nextId, false);
         }
 
         /// <summary>Asks for a transition whose target pose is not known yet: the animation system samples it (Unity: a clip through the playable graph, at its
@@ -219,15 +208,42 @@ namespace DeltaInterpolator.Core.Playback
         /// <returns>The request's id, as reported by <see cref="TransitionCompleted"/>.</returns>
         /// <exception cref="InvalidOperationException">No frame was recorded yet.</exception>
         /// <exception cref="ArgumentOutOfRangeException">The duration is not positive or longer than the model can span.</exception>
-        public int DeferTransition(double durationSeconds)
+        public int DeferTransition(double durationSeconds) => Defer(durationSeconds, false);
+
+        /// <summary><see cref="DeferTransition"/> as a hand-off: the transition starts from the pose shown at full
+        /// weight (the controller's old motion is not blended in, as nothing returns to it) and lets go in the frame it arrives (weight 0 from then on, no
+        /// blend-out), when the controller shows the target state itself (<see cref="TransitionCharacter.RequestState"/>, <see cref="AnimatorTransitions"/>).</summary>
+        /// <returns>The request's id, as reported by <see cref="TransitionCompleted"/>.</returns>
+        /// <exception cref="InvalidOperationException">No frame was recorded yet.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">The duration is not positive or longer than the model can span.</exception>
+        public int DeferHandOff(double durationSeconds) => Defer(durationSeconds, true);
+
+        private int Defer(double durationSeconds, bool letGoOnArrival)
         {
             CheckRequestable(durationSeconds);
             DropDeferred();
             _deferredId = ++_nextId;
+            _deferredLetGo = letGoOnArrival;
             _deferredArrival = History.NewestTime + durationSeconds;
             FlushEvents();
             return _deferredId;
         }
+
+        /// <summary>The id of the request waiting for its target pose (0: none), and the frame time it arrives at (the engine samples where the character will be then).</summary>
+        public int DeferredRequestId => _deferredId;
+
+        /// <inheritdoc cref="DeferredRequestId"/>
+        public double DeferredArrivalTime => _deferredArrival;
+
+        /// <summary>True when the current request lets go on arrival (a hand-off) rather than blending out.</summary>
+        public bool LetsGoOnArrival => _letGo;
+
+        // The hand-off request that arrived in this frame (0: none), and how late its frame came after the target time.
+        internal int LetGoArrivedId => _letGoArrived;
+        internal double LetGoLateSeconds => _letGoLate;
+
+        /// <summary>The model's contract (trained gaps, span), for the types that decide what to request.</summary>
+        internal ModelContract Contract => _scheduler.Contract;
 
         /// <summary>True while a <see cref="DeferTransition"/> request waits for its target pose.</summary>
         public bool HasDeferredTransition => _deferredId != 0;
@@ -244,7 +260,7 @@ namespace DeltaInterpolator.Core.Playback
             int id = _deferredId;
             _deferredId = 0;
             double duration = Math.Max(_deferredArrival - History.NewestTime, 1.0 / FrameRate);
-            return Start(targetRoot, targetRotations, duration, MissingFramesFor(duration), id);
+            return Start(targetRoot, targetRotations, duration, MissingFramesFor(duration), id, _deferredLetGo);
         }
 
         // The duration's missing frames, after the checks every request passes.
@@ -260,11 +276,11 @@ namespace DeltaInterpolator.Core.Playback
         private void DropDeferred()
         {
             if (_deferredId == 0) return;
-            _pendingDropped = new TransitionCompletion(_deferredId, false, History.Count == 0 ? 0 : History.NewestTime);
+            _events.Dropped(_deferredId, History.Count == 0 ? 0 : History.NewestTime);
             _deferredId = 0;
         }
 
-        private int Start(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double durationSeconds, int missing, int id)
+        private int Start(ReadOnlySpan<double> targetRoot, ReadOnlySpan<double> targetRotations, double durationSeconds, int missing, int id, bool letGo)
         {
             int gap = missing + 1;
             bool wasPlaying = _playing;
@@ -320,7 +336,9 @@ namespace DeltaInterpolator.Core.Playback
             _period = durationSeconds / gap;
             // A first request eases in from the character's animation; one during a transition starts from
             // the pose shown at full weight, which is continuous because the new keys end at that pose.
-            _startWeight = wasPlaying ? 1.0 : 0.0;
+            // A hand-off starts at full weight too: the controller's old motion is not blended in, nothing returns to it.
+            _startWeight = wasPlaying || letGo ? 1.0 : 0.0;
+            _letGo = letGo;
             FlushEvents();
             return _requestId;
         }
@@ -340,6 +358,7 @@ namespace DeltaInterpolator.Core.Playback
         public void BeginFrame(double time)
         {
             _inFrame = true;
+            _letGoArrived = 0;
             try
             {
                 Advance(time);
@@ -408,8 +427,14 @@ namespace DeltaInterpolator.Core.Playback
                     _feet?.Locker.End();
                     _targetRoot.CopyTo(_poseRoot, 0);
                     _targetRotations.CopyTo(_poseRotations, 0);
-                    _pendingCompletion = new TransitionCompletion(_requestId, true, time);
+                    _events.Reached(_requestId, time);
                     _weight = 1;
+                    if (!_letGo) return;
+                    // A hand-off: the controller shows the target itself from this frame on (no blend-out, nothing returns to the old motion).
+                    _letGoArrived = _requestId;
+                    _letGoLate = time - (_start + _duration);
+                    _playing = false;
+                    _weight = 0;
                     return;
                 }
 
@@ -452,32 +477,11 @@ namespace DeltaInterpolator.Core.Playback
         {
             _feet?.Locker.End();
             if (_request != null) _request.Cancel();
-            if (_playing && !_reached) _pendingInterruption = new TransitionCompletion(_requestId, false, time);
+            if (_playing && !_reached) _events.Interrupted(_requestId, time);
             _playing = false;
         }
 
-        private void FlushEvents()
-        {
-            // Events fire after the state is consistent, so a handler may request the next transition (from
-            // BeginFrame: without disturbing the pose this frame shows).
-            if (_pendingInterruption is TransitionCompletion interrupted)
-            {
-                _pendingInterruption = null;
-                TransitionCompleted?.Invoke(interrupted);
-            }
-
-            if (_pendingDropped is TransitionCompletion dropped)
-            {
-                _pendingDropped = null;
-                TransitionCompleted?.Invoke(dropped);
-            }
-
-            if (_pendingCompletion is TransitionCompletion completed)
-            {
-                _pendingCompletion = null;
-                TransitionCompleted?.Invoke(completed);
-            }
-        }
+        private void FlushEvents() => _events.Flush(TransitionCompleted);
 
         private TransitionRequest RequestFor(int past, int missing)
         {

@@ -55,11 +55,32 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>What the last frame showed (the animation job's output).</summary>
         public ArrayPoseStream Shown { get; }
 
+        /// <summary>The character (for hand-offs and its Animator transitions).</summary>
+        public TransitionCharacter Character => _character;
+
+        /// <summary>The controller layers' state machines the next frame hands in (as the glue reads them), or null.</summary>
+        public AnimatorLayerState[]? Layers { get; set; }
+
+        /// <summary>Entries of <see cref="Layers"/> filled.</summary>
+        public int LayerCount { get; set; }
+
+        /// <summary>Bones a masked controller layer above drives, kept from the controller's pose (<see cref="PoseBlend.ApplyMasked"/>), or null.</summary>
+        public bool[]? KeptBones { get; set; }
+
+        /// <summary>
+        /// Called in each frame after the character's frame and before the controller's pose is taken: the glue's part that acts on the
+        /// frame's instructions to the controller (<see cref="CharacterFrameOutput.PlayState"/>).
+        /// </summary>
+        public Action<CharacterFrameOutput>? BeforeController { get; set; }
+
+        /// <summary>The last frame's output (its pose buffer is the character's).</summary>
+        public CharacterFrameOutput LastFrame { get; private set; }
+
         /// <summary>
         /// One rendered frame <paramref name="deltaTime"/> seconds after the last: the character's frame, the
         /// controller's pose at the new time, the transition blended over it into <see cref="Shown"/>.
         /// </summary>
-        public void Frame(double deltaTime)
+        public CharacterFrameOutput Frame(double deltaTime)
         {
             var input = new CharacterFrameInput
             {
@@ -70,14 +91,26 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 FixedDeltaTime = 0.02,
                 ApplyRootMotion = false,
                 Place = Origin,
+                Layers = Layers,
+                LayerCount = LayerCount,
             };
             CharacterFrameOutput frame = _character.Frame(input, ShownPose(), _sampled ? _sampledTarget : ReadOnlySpan<double>.Empty);
             _sampled = false;
             // A plain check (NUnit's Assert would allocate): every frame here advances the clock and plays.
             if (!frame.Played) throw new InvalidOperationException("a frame did not play: " + frame.FailureReason, frame.Error);
+            BeforeController?.Invoke(frame);
             _controller(Time, _stream.Root, _stream.Rotations);
             var pose = new ReadOnlySpan<double>(frame.Pose);
-            PoseBlend.Apply(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), Shown.Root, Shown.Rotations);
+            PoseBlend.ApplyMasked(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), KeptBones, Shown.Root, Shown.Rotations);
+            LastFrame = frame;
+            return frame;
+        }
+
+        /// <summary>A hand-off into a controller state, from the pose shown, as the component requests one.</summary>
+        public int RequestState(in StateTarget state, double seconds, IControllerStates controller)
+        {
+            _character.Showed(Origin, false, ShownPose());
+            return _character.RequestState(state, seconds, controller);
         }
 
         /// <summary>A transition to a pose given in the character's space, from the pose shown, as the component requests one.</summary>

@@ -17,7 +17,7 @@ namespace DeltaInterpolator.Samples.Demo.Timeline.Editor
     /// <summary>
     /// <b>Tools → Δ-Interpolator → Build Timeline Demo</b> (with com.unity.timeline installed): from this sample's two CMU
     /// clips builds a scene with two copies of the character side by side and one Timeline: on the left a Neural
-    /// Animation Track plays the walk, a 0.5 s blend, the jumps, a 0.8 s gap and the walk again; on the right an
+    /// Animation Track plays Walk, a 0.3 s blend, Jump, a 0.6 s gap and Walk again; on the right an
     /// Animation Track plays the same clips at the same times with Timeline's crossfade (and nothing in the gap). Open
     /// the Timeline window and scrub: the left character shows the model's in-betweens. Existing files are never
     /// overwritten (new names are taken).
@@ -48,8 +48,8 @@ namespace DeltaInterpolator.Samples.Demo.Timeline.Editor
             string characterPath = folder + "/" + CharacterFile;
             GameObject character = AssetDatabase.LoadAssetAtPath<GameObject>(characterPath);
             if (character == null) throw new InvalidOperationException($"{characterPath} is not imported as a character; the package's BVH importer makes .bvh files characters (reimport the sample)");
-            AnimationClip walk = Clip(characterPath);
-            AnimationClip jumps = Clip(folder + "/" + JumpsFile);
+            AnimationClip walk = Clip(characterPath, "Walk");
+            AnimationClip jumps = Clip(folder + "/" + JumpsFile, "Jump");
             Avatar? avatar = null;
             foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(characterPath)) if (o is Avatar a) avatar = a;
             bool humanoid = avatar != null && avatar.isHuman;
@@ -58,13 +58,14 @@ namespace DeltaInterpolator.Samples.Demo.Timeline.Editor
             var timeline = ScriptableObject.CreateInstance<TimelineAsset>();
             AssetDatabase.CreateAsset(timeline, AssetDatabase.GenerateUniqueAssetPath(folder + "/Timeline Demo.playable"));
 
-            // Walk 0–3 s, jumps from 2.5 s (a 0.5 s blend) to 5.5 s, then after a 0.8 s gap the walk from 6.3 s.
+            // Within each clip's own length (the sample's Walk is one 1.11 s gait cycle, Jump 1.6 s): Walk 0–1.1 s, Jump from
+            // 0.8 s (a 0.3 s blend, 8 missing frames at 30 fps) to 2.4 s, then after a 0.6 s gap (17 missing frames) Walk from 3 s.
             var neural = timeline.CreateTrack<NeuralAnimationTrack>(null!, "Neural blends");
             neural.Settings = settings;
             var crossfade = timeline.CreateTrack<AnimationTrack>(null!, "Timeline crossfade");
-            Place(neural.CreateClip<AnimationPlayableAsset>(), crossfade.CreateClip(walk), walk, 0.0, 3.0, 1.0);
-            Place(neural.CreateClip<AnimationPlayableAsset>(), crossfade.CreateClip(jumps), jumps, 2.5, 3.0, 0.0);
-            Place(neural.CreateClip<AnimationPlayableAsset>(), crossfade.CreateClip(walk), walk, 6.3, 3.0, 4.0);
+            Place(neural.CreateClip<AnimationPlayableAsset>(), crossfade.CreateClip(walk), walk, 0.0, 1.1, 0.0);
+            Place(neural.CreateClip<AnimationPlayableAsset>(), crossfade.CreateClip(jumps), jumps, 0.8, 1.6, 0.0);
+            Place(neural.CreateClip<AnimationPlayableAsset>(), crossfade.CreateClip(walk), walk, 3.0, 1.1, 0.0);
             AssetDatabase.SaveAssets();
 
             Scene scene = EditorSceneManager.NewScene(NewSceneSetup.DefaultGameObjects, NewSceneMode.Single);
@@ -129,10 +130,11 @@ namespace DeltaInterpolator.Samples.Demo.Timeline.Editor
             return settings;
         }
 
-        private static AnimationClip Clip(string bvhPath)
+        /// <summary>The clip called <paramref name="name"/> that the BVH importer cut from the take (its .bvh.meta names it).</summary>
+        private static AnimationClip Clip(string bvhPath, string name)
         {
-            foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(bvhPath)) if (o is AnimationClip c) return c;
-            throw new InvalidOperationException($"{bvhPath} has no clip; the package's BVH importer makes one (reimport the sample)");
+            foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(bvhPath)) if (o is AnimationClip c && c.name == name) return c;
+            throw new InvalidOperationException($"{bvhPath} has no clip '{name}'; the package's BVH importer cuts it as the sample's .bvh.meta says (reimport the sample)");
         }
 
         // The folder this sample was imported into (Assets/Samples/<package>/<version>/Demo): where its clips are.

@@ -102,10 +102,16 @@ namespace UnityEngine.Playables
     // source: unity:Runtime/Export/Director/PlayableExtensions.cs
     public static partial class PlayableExtensions
     {
+        public static bool IsValid<U>(this U playable)
+            where U : struct, IPlayable => throw null!;
+
         public static void Pause<U>(this U playable)
             where U : struct, IPlayable => throw null!;
 
         public static void SetTime<U>(this U playable, double value)
+            where U : struct, IPlayable => throw null!;
+
+        public static void SetSpeed<U>(this U playable, double value)
             where U : struct, IPlayable => throw null!;
     }
 
