@@ -26,14 +26,10 @@ namespace DeltaInterpolator.Core.Playback
         private readonly TransitionCharacter _character;
         private readonly List<LayerTransitionSettings> _layers = new List<LayerTransitionSettings>();
         private readonly HashSet<long> _announced = new HashSet<long>();
+        // Per watched layer (as _layers), the transition last decided on (replaced or kept): a character's own, as settings may be shared.
+        private readonly List<Seen> _seen = new List<Seen>();
         private int _layer = -1;
-        private int _transitionId;
-        private int _nextState;
         private int _requestId;
-        private bool _declinedValid;
-        private int _declinedLayer;
-        private int _declinedTransition;
-        private int _declinedNext;
 
         internal AnimatorTransitions(TransitionCharacter character)
         {
@@ -64,24 +60,36 @@ namespace DeltaInterpolator.Core.Playback
             {
                 if (_layers[i].Layer != settings.Layer) continue;
                 _layers[i] = settings;
+                _seen[i] = default;
                 return;
             }
 
             _layers.Add(settings);
+            _seen.Add(default);
         }
 
         /// <summary>Stops watching every layer (transitions stay crossfades; one playing goes on to its target).</summary>
-        public void Clear() => _layers.Clear();
+        public void Clear()
+        {
+            _layers.Clear();
+            _seen.Clear();
+        }
 
         /// <summary>The settings of layer <paramref name="layer"/>, or null when it is not watched.</summary>
         public LayerTransitionSettings? For(int layer)
         {
+            int i = IndexOf(layer);
+            return i < 0 ? null : _layers[i];
+        }
+
+        private int IndexOf(int layer)
+        {
             for (int i = 0; i < _layers.Count; i++)
             {
-                if (_layers[i].Layer == layer) return _layers[i];
+                if (_layers[i].Layer == layer) return i;
             }
 
-            return null;
+            return -1;
         }
 
         // Called by the character's frame after the pose shown is recorded: true (with the state to sample) when an in-between starts.
@@ -92,10 +100,20 @@ namespace DeltaInterpolator.Core.Playback
             for (int i = 0; i < layers.Length; i++)
             {
                 AnimatorLayerState s = layers[i];
-                LayerTransitionSettings? settings = For(s.Layer);
-                if (settings == null || !s.InTransition) continue;
-                if (_layer == s.Layer && s.TransitionId == _transitionId && s.NextStateHash == _nextState) continue;
-                if (_declinedValid && _declinedLayer == s.Layer && _declinedTransition == s.TransitionId && _declinedNext == s.NextStateHash) continue;
+                int watched = IndexOf(s.Layer);
+                if (watched < 0) continue;
+                LayerTransitionSettings settings = _layers[watched];
+                // Each transition is decided once (replaced or kept): it stays seen until its layer leaves transition, even when
+                // the in-between arrives a frame before the controller's crossfade ends.
+                if (!s.InTransition)
+                {
+                    _seen[watched] = default;
+                    continue;
+                }
+
+                Seen seen = _seen[watched];
+                if (seen.Valid && seen.Transition == s.TransitionId && seen.Next == s.NextStateHash) continue;
+                _seen[watched] = new Seen { Valid = true, Transition = s.TransitionId, Next = s.NextStateHash };
                 if (Starts(s, settings, out sample)) return true;
             }
 
@@ -112,10 +130,6 @@ namespace DeltaInterpolator.Core.Playback
                 && Trained(s);
             if (!accepted)
             {
-                _declinedValid = true;
-                _declinedLayer = s.Layer;
-                _declinedTransition = s.TransitionId;
-                _declinedNext = s.NextStateHash;
                 KeptCrossfades++;
                 // The in-between this transition interrupts would fight the crossfade: the crossfade has the character.
                 if (_layer == s.Layer && IsOurs()) _character.Cancel();
@@ -123,11 +137,8 @@ namespace DeltaInterpolator.Core.Playback
                 return false;
             }
 
-            _declinedValid = false;
             _requestId = _character.DeferHandOff(remaining);
             _layer = s.Layer;
-            _transitionId = s.TransitionId;
-            _nextState = s.NextStateHash;
             Replaced++;
             sample = new StateTarget(s.Layer, s.NextStateHash, s.NextStateSecondsAtEnd);
             return true;
@@ -153,6 +164,13 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             return false;
+        }
+
+        private struct Seen
+        {
+            public bool Valid;
+            public int Transition;
+            public int Next;
         }
 
         private bool IsOurs()

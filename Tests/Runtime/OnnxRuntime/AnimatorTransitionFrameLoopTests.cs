@@ -163,6 +163,38 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             return bounds;
         }
 
+        [Test]
+        public void ATransitionIsDecidedOnceEvenWhenTheControllerStillReportsItAfterTheArrival()
+        {
+            // A controller whose report lags a frame behind the arrival: the same transition must not start a second in-between.
+            using var loop = new StandInLoop(60, Walking(false));
+            loop.Transitions.Watch(new LayerTransitionSettings(0));
+            loop.PlayUntil(1.0);
+            StandInState slow = loop.Controller.Find("SlowWalk".GetHashCode())!;
+            loop.Controller.Layer(0).CrossFade(slow, 0.3, transitionId: 1, nextStart: 1.0);
+            double end = loop.Time + 0.3;
+            AnimatorLayerState lastInTransition = default;
+            while (loop.Time + loop.Step < end - 1e-9)
+            {
+                loop.Frame();
+                lastInTransition = loop.Controller.Layer(0).Read(0);
+            }
+
+            loop.Frame();
+            Assert.That(loop.Completions.Single().ReachedTarget, Is.True, "arrived");
+            loop.AfterRead = layers => layers[0] = lastInTransition;
+            for (int i = 0; i < 3; i++)
+            {
+                loop.Frame();
+                Assert.That(loop.Last.SampleState, Is.False);
+                Assert.That(loop.Last.Weight, Is.EqualTo(0));
+            }
+
+            Assert.That(loop.Transitions.Replaced, Is.EqualTo(1));
+            Assert.That(loop.Transitions.KeptCrossfades, Is.EqualTo(0), "not decided again (as a too-short remainder)");
+            Assert.That(loop.Player.HasDeferredTransition, Is.False);
+        }
+
         [TestCase(0.1)]
         [TestCase(2.0)]
         public void ATransitionOutsideTheTrainedGapsKeepsItsCrossfadeSaidOncePerLength(double seconds)

@@ -162,6 +162,24 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
+        public void AHandOffAllocatesNothingPerFrame()
+        {
+            using var loop = new StandInLoop(60, Walking);
+            loop.PlayUntil(1.0);
+            StandInState dribble = loop.Controller.States.Single(s => s.Name == "Dribble");
+            loop.RequestState(new StateTarget(0, dribble.Hash, 3.5), 1.0);
+            loop.Frame();
+            loop.Frame();
+            loop.Decode();
+            loop.Frame();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 40; i++) loop.Frame();
+            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(loop.Player.IsPlaying && loop.Player.LetsGoOnArrival, Is.True, "a hand-off plays");
+            Assert.That(bytes, Is.EqualTo(0), "bytes over 40 frames of a hand-off");
+        }
+
+        [Test]
         public void AHandOffIntoABlendTreeReadsTheTargetAtTheCharactersParameter()
         {
             using var loop = new StandInLoop(60, Walking);

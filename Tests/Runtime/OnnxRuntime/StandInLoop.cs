@@ -78,6 +78,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// <summary>The last frame's output.</summary>
         public CharacterFrameOutput Last => Character.LastFrame;
 
+        /// <summary>Changes what the glue read of the layers before a frame (a controller whose report lags), or null.</summary>
+        public Action<AnimatorLayerState[]>? AfterRead { get; set; }
+
         /// <summary>Play states seen in frame outputs, with the frame time they came in.</summary>
         public List<(double Time, StateTarget State)> Plays { get; } = new List<(double, StateTarget)>();
 
@@ -90,6 +93,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             _scheduler.Pump();
             Character.LayerCount = Controller.Read(_layers);
+            AfterRead?.Invoke(_layers);
             _frame++;
             CharacterFrameOutput output = Character.Frame(_frame / _fps - Time);
             if (!output.SampleState) return;
