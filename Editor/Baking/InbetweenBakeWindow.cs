@@ -20,6 +20,7 @@ namespace DeltaInterpolator.Editor.Baking
 {
     /// <summary>
     /// Window → Animation → In-between Baker: fills the gaps between key poses with the model and saves
+    /// the result as a new clip (the In-between Fill's "write to a new clip": the same key plan, <see cref="KeyFill.Plan"/>).
     /// the result as a new clip. The keys come from a clip's own keyframes, or from two clips and a
     /// transition point. The baker takes what the component takes: the character's rig as the settings
     /// describe it (<see cref="RigCollector"/>: a humanoid avatar, or a generic rig with a joint map and its
@@ -67,6 +68,20 @@ namespace DeltaInterpolator.Editor.Baking
         private static void Open()
         {
             GetWindow<InbetweenBakeWindow>("In-between Baker");
+        }
+
+        /// <summary>
+        /// The In-between Fill's "write to a new clip": this window, set to <paramref name="clip"/>'s keys (or keys
+        /// every N of it) for the same character, settings and model.
+        /// </summary>
+        internal static void Show(GameObject? character, InbetweenerSettings? settings, InbetweeningModel? model, AnimationClip clip, KeySource keys)
+        {
+            InbetweenBakeWindow window = GetWindow<InbetweenBakeWindow>("In-between Baker");
+            window._character = character;
+            window._settings = settings;
+            window._model = model;
+            window._keyClip = clip;
+            window._source = keys;
         }
 
         private void OnGUI()
@@ -127,7 +142,7 @@ namespace DeltaInterpolator.Editor.Baking
 
         // The whole graph only: a bake decodes every gap at once. The settings' engine, else Sentis,
         // else the first engine registered with InferenceBackends.
-        private static Inbetweener Load(InbetweeningModel model, string backend)
+        internal static Inbetweener Load(InbetweeningModel model, string backend)
         {
             IInferenceBackendFactory? factory = InferenceBackends.Find(backend) ?? InferenceBackends.Find("Sentis");
             if (factory == null && InferenceBackends.All.Count > 0) factory = InferenceBackends.All[0];
@@ -144,7 +159,7 @@ namespace DeltaInterpolator.Editor.Baking
             if (_character == null) return "Assign the character (the GameObject with the Animator the clips animate).";
             if (_character.transform.GetComponent<Animator>() == null) return $"{_character.name} has no Animator; assign the GameObject that holds it.";
             if (_settings == null) return "Assign the in-betweener settings (the rig, joint map and renames the component uses).";
-            if (ModelAsset() == null) return "Assign a model asset here or in the settings (Create → Delta Interpolator → Model).";
+            if (ModelAsset() == null) return "Assign a model asset here or in the settings (Assets → Create → Δ-Interpolator → In-betweening Model (shipped default), or In-betweening Model for your own graphs).";
             if (_pastFrames < 1) return "Past keys must be at least 1.";
             if (_source == KeySource.ClipKeyframes) return _keyClip == null ? "Assign the clip whose keyframes are the key poses." : null;
             if (_source == KeySource.EveryN)
@@ -213,22 +228,23 @@ namespace DeltaInterpolator.Editor.Baking
                     double rate = contract.FramesPerSecond;
                     // The character as the component sees it: the same bones, joint map and renames.
                     CharacterRig rig = RigCollector.Collect(animator, settings, contract.Skeleton, out JointMap jointMap, out Transform[] bones);
-                    bool humanoid = settings.Rig == CharacterRigKind.Humanoid;
+                    bool humanoid = settings.RigOf(animator) == CharacterRigKind.Humanoid;
 
                     CharacterPoseTrack track;
                     string name;
                     if (_source == KeySource.ClipKeyframes)
                     {
                         AnimationClip clip = _keyClip!;
-                        ClipKeyFrames keys = ClipKeyReader.Read(ClipSampler.PoseKeyTimes(clip), rate, clip.length);
-                        if (keys.GapCount == 0)
+                        // The key frames as the In-between Fill reads them (one Core plan): it refuses a clip without a gap.
+                        KeyFillPlan keys = KeyFill.Plan(clip.name, ClipCurves.Read(clip).Curves, clip.length, rate, null, ClipSampler.MuscleProperties());
+                        (int min, int max) = contract.TrainingMissingFrames;
+                        var outside = new List<int>();
+                        for (int i = 1; i < keys.KeyFrames.Count; i++)
                         {
-                            EditorUtility.DisplayDialog("Nothing to fill", $"{clip.name} has no gap between its keys at {rate:0.##} fps.", "OK");
-                            return;
+                            int missing = keys.KeyFrames[i] - keys.KeyFrames[i - 1] - 1;
+                            if (missing > 0 && max > 0 && (missing < min || missing > max)) outside.Add(missing);
                         }
 
-                        (int min, int max) = contract.TrainingMissingFrames;
-                        IReadOnlyList<int> outside = keys.GapsOutside(min, max);
                         if (outside.Count > 0 && !EditorUtility.DisplayDialog(
                                 "Gaps outside the trained range",
                                 $"{contract.Source} was trained on gaps of {min}–{max} frames; {clip.name} has gaps of {string.Join(", ", outside)} frames. The model will fill them, but it never saw such gaps: check the result, or move keys.",
@@ -238,11 +254,11 @@ namespace DeltaInterpolator.Editor.Baking
                             return;
                         }
 
-                        track = new CharacterPoseTrack(rig, keys.FrameCount, 1.0 / rate);
+                        track = new CharacterPoseTrack(rig, keys.LastKey + 1, 1.0 / rate);
                         progress.Show("Sampling the key poses…", 0f);
                         using (new AnimationModeScope())
                         {
-                            ClipSampler.SampleInto(track, character, bones, clip, keys.Frames, keys.Frames.Select(f => f / rate).ToList());
+                            ClipSampler.SampleInto(track, character, bones, clip, keys.KeyFrames, keys.KeyTimes);
                         }
 
                         name = clip.name + " (in-betweened)";

@@ -50,10 +50,9 @@ namespace DeltaInterpolator.Unity
         /// <summary>Builds from <paramref name="s"/>; refuses (with what to do) a missing model or engine and a rig that cannot be mapped.</summary>
         public static CharacterBuild Create(Animator animator, InbetweenerSettings s, MotionInbetweener component, string graphName, ushort sortingOrder)
         {
-            InbetweeningModel model = s.Model != null ? s.Model : throw new InvalidOperationException($"the settings {s.name} have no model; assign an imported in-betweening model");
-            IInferenceBackendFactory factory = InferenceBackends.Find(s.Backend)
-                ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
+            IInferenceBackendFactory factory = Engine(s, out InbetweeningModel model);
             TransitionScheduler scheduler = SharedSchedulers.Acquire(model, factory);
+            TransitionLayerBinder? binder = null;
             try
             {
                 ModelContract contract = scheduler.Contract;
@@ -63,7 +62,7 @@ namespace DeltaInterpolator.Unity
                 var character = new TransitionCharacter(converter, scheduler, playback, rig.Armature, model.name, factory.Name);
                 // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
                 var watcher = new AnimatorTransitionWatcher(animator, s.NeuralTransitions, character.Transitions, bones, component);
-                var binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
+                binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
                 // Neural transitions read states at their first transition: the controller copy is made now, not in that frame.
                 if (watcher.Watching) binder.States.Warm();
                 var requests = new CharacterRequests(character, binder, animator, s, component, bones.Length);
@@ -71,9 +70,20 @@ namespace DeltaInterpolator.Unity
             }
             catch
             {
+                // Whatever failed (the component stops once, PlaybackStatus.TryStart), nothing built so far is left behind: the
+                // binder's graph and native buffers, and this character's hold on the model.
+                binder?.Dispose();
                 SharedSchedulers.Release(scheduler);
                 throw;
             }
+        }
+
+        /// <summary>The settings' model and engine; refuses (with what to do) a missing model or an engine that is not installed.</summary>
+        public static IInferenceBackendFactory Engine(InbetweenerSettings s, out InbetweeningModel model)
+        {
+            model = s.Model != null ? s.Model : throw new InvalidOperationException($"the settings {s.name} have no model; assign an imported in-betweening model");
+            return InferenceBackends.Find(s.Backend)
+                ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
         }
 
         public void Dispose()

@@ -20,8 +20,8 @@ namespace DeltaInterpolator.Unity
         private string backend = "Sentis";
 
         [SerializeField]
-        [Tooltip("Humanoid: bones and T-pose from the Animator's humanoid avatar. Generic: bones found by the joint map's names under the Animator.")]
-        private CharacterRigKind rig = CharacterRigKind.Generic;
+        [Tooltip("Automatic: Humanoid when the Animator has a humanoid avatar, else Generic. Humanoid: bones and T-pose from the Animator's humanoid avatar. Generic: bones found by the joint map's names under the Animator.")]
+        private CharacterRigKind rig = CharacterRigKind.Automatic;
 
         [SerializeField]
         [Tooltip("Generic rigs: the bone-naming convention (LaFAN1, CMU, Mixamo, Poser).")]
@@ -68,6 +68,10 @@ namespace DeltaInterpolator.Unity
         private bool lockFeet = true;
 
         [SerializeField]
+        [Tooltip("Load the model as soon as a scene that uses these settings has loaded (a character in it, or a prefab a spawner in it references), so the first character to start later does not wait for a synchronous load mid-game. Off: the first character to start loads it.")]
+        private bool loadOnAwake = true;
+
+        [SerializeField]
         [Tooltip("Neural Animator transitions: per controller layer, the Animator's own transitions (within a duration range, filtered by state tags) become in-betweens that end on the next state's pose. Empty, or every entry disabled (the default: the base layer, off): every transition stays a crossfade.")]
         // One entry for the base layer, off: the inspector shows the switch, and nothing changes until it is ticked.
         private NeuralTransitionLayer[] neuralTransitions = { new NeuralTransitionLayer { layer = 0, enabled = false } };
@@ -75,11 +79,37 @@ namespace DeltaInterpolator.Unity
         /// <summary>The model.</summary>
         public InbetweeningModel? Model => model;
 
+        /// <summary>Whether the model is loaded when a scene that uses these settings has loaded (<see cref="Preload"/>), not when the first character starts.</summary>
+        public bool LoadOnAwake => loadOnAwake;
+
+        /// <summary>True while these settings hold their model loaded (<see cref="Preload"/>, or <see cref="LoadOnAwake"/>).</summary>
+        public bool IsPreloaded => ModelPreloads.IsPreloaded(this);
+
+        /// <summary>
+        /// Loads the model on the settings' engine now (e.g. behind a loading screen) and holds it, so characters using these
+        /// settings start without loading it; they share it. Held until <see cref="ReleasePreload"/>, the settings being
+        /// unloaded, or the end of play. Does nothing when already held.
+        /// </summary>
+        /// <exception cref="InvalidOperationException">The settings have no model, or their inference engine is not installed.</exception>
+        /// <exception cref="Core.Inference.ModelContractException">The model cannot be loaded or does not fit its contract.</exception>
+        public void Preload() => ModelPreloads.Preload(this);
+
+        /// <summary>Lets the model <see cref="Preload"/> loaded go: it is disposed once no character uses it either.</summary>
+        public void ReleasePreload() => ModelPreloads.Release(this);
+
         /// <summary>The inference engine's name (<see cref="InferenceBackends"/>).</summary>
         public string Backend => backend;
 
-        /// <summary>How the character's bones and reference pose are found.</summary>
+        /// <summary>How the character's bones and reference pose are found (<see cref="RigOf"/> decides <see cref="CharacterRigKind.Automatic"/>).</summary>
         public CharacterRigKind Rig => rig;
+
+        /// <summary>The rig <paramref name="animator"/> is read as: <see cref="Rig"/>, with <see cref="CharacterRigKind.Automatic"/> decided by its avatar.</summary>
+        public CharacterRigKind RigOf(Animator animator)
+        {
+            if (animator == null) throw new ArgumentNullException(nameof(animator));
+            if (rig != CharacterRigKind.Automatic) return rig;
+            return animator.isHuman ? CharacterRigKind.Humanoid : CharacterRigKind.Generic;
+        }
 
         /// <summary>Generic rigs: the bone-naming convention.</summary>
         public BuiltInJointMap JointMap => jointMap;
@@ -151,5 +181,10 @@ namespace DeltaInterpolator.Unity
         internal event Action<InbetweenerSettings>? Changed;
 
         private void OnValidate() => Changed?.Invoke(this);
+
+        // Loaded with a scene (or by a script): Load On Awake preloads it once the scene has loaded.
+        private void OnEnable() => ModelPreloads.Loaded(this);
+
+        private void OnDisable() => ModelPreloads.Unloaded(this);
     }
 }

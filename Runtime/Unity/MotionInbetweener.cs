@@ -175,15 +175,8 @@ namespace DeltaInterpolator.Unity
                 return;
             }
 
-            try
-            {
-                Build();
-                _status.Run();
-            }
-            catch (Exception e) when (e is DataFormatException || e is ArgumentException || e is InvalidOperationException || e is JointMapException)
-            {
-                Stop(e.Message, e);
-            }
+            // Any exception of the load (Sentis asserts, `new Worker`, a backend factory's own type) stops the component once: no reload every frame.
+            if (!_status.TryStart(Build, settings.Model != null ? settings.Model.name : settings.name)) Stop(_status.Reason, _status.Error);
         }
 
         // Applies edited settings: blend times at once; a change of what the build used re-initialises.
@@ -221,7 +214,7 @@ namespace DeltaInterpolator.Unity
         private void Update()
         {
             if (_settingsChanged) ApplySettingsChange();
-            if (_status.State == PlaybackState.Waiting && settings != null) Rebuild();
+            if (_status.ShouldStart(settings != null)) Rebuild();
             SchedulerPump.CheckPumpedThisFrame(this);
             Tick(FrameCallback.Update);
         }
@@ -272,7 +265,7 @@ namespace DeltaInterpolator.Unity
         {
             // Settings assigned through serialization or edited this frame: initialise now rather than at the next Update.
             if (_isEnabled && _settingsChanged) ApplySettingsChange();
-            if (_isEnabled && _status.State == PlaybackState.Waiting && settings != null) Rebuild();
+            if (_isEnabled && _status.ShouldStart(settings != null)) Rebuild();
             return _build?.Requests ?? throw new InvalidOperationException($"{name}: the Motion Inbetweener is not running: {_status.Reason}");
         }
 

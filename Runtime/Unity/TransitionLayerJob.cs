@@ -17,6 +17,8 @@ namespace DeltaInterpolator.Unity
     /// </summary>
     internal struct TransitionLayerJob : IAnimationJob
     {
+        // Shared with the ClipTargetReadJob of the same graph; the handles are only read (the stream is written through them).
+        [ReadOnly]
         public NativeArray<TransformStreamHandle> Bones;
         public NativeArray<double> Pose;
         public NativeArray<double> Shown;

@@ -23,11 +23,14 @@ namespace DeltaInterpolator.Preview
         /// <param name="keys">Key frame indices of the files, increasing.</param>
         /// <param name="firstIsTruth">True when the first track is the ground truth the others are measured against.</param>
         /// <param name="map">A joint map (model joint → the files' joints) naming the hands and feet whose trails are drawn; null: found by name.</param>
-        /// <exception cref="DataFormatException">A file cannot be shown with the others, a key lies outside the frames shown, or the map names a hand or foot the files lack.</exception>
-        public static PreviewScene Build(IReadOnlyList<(string Name, string Path)> tracks, (int Start, int End)? range, IReadOnlyList<int> keys, bool firstIsTruth, JointMap? map = null)
+        /// <param name="up">The files' up axis (<c>--up</c>): decided from the first file (the ground truth when there is one) and applied to every track, since they share one skeleton and one world; what was decided is <see cref="PreviewScene.UpAxisDescription"/>.</param>
+        /// <exception cref="DataFormatException">A file cannot be shown with the others, a key lies outside the frames shown, the map names a hand or foot the files lack, or <c>--up z</c> is asked of a rig with no hips, head or feet to turn by.</exception>
+        public static PreviewScene Build(IReadOnlyList<(string Name, string Path)> tracks, (int Start, int End)? range, IReadOnlyList<int> keys, bool firstIsTruth, JointMap? map = null, UpAxis up = UpAxis.Auto)
         {
             var clips = new List<(string Name, MotionClip Clip)>();
             BvhAnimation? first = null;
+            UpAxisDecision? upright = null;
+            string upDescription = "";
             foreach ((string name, string path) in tracks)
             {
                 BvhAnimation animation = BvhReader.Read(path);
@@ -36,13 +39,15 @@ namespace DeltaInterpolator.Preview
                 if (first == null)
                 {
                     first = animation;
+                    upright = DecideUp(animation, path, map, up, out upDescription);
                 }
                 else
                 {
                     RequireSameKind(first, animation, path);
                 }
 
-                clips.Add((name, Slice(animation.Motion, range, path)));
+                MotionClip motion = upright == null ? animation.Motion : upright.Apply(animation.Motion);
+                clips.Add((name, Slice(motion, range, path)));
             }
 
             int frames = 0;
@@ -64,6 +69,7 @@ namespace DeltaInterpolator.Preview
             string title = Path.GetFileName(tracks[0].Path) + (range == null ? "" : $", frames {offset}–{offset + frames - 1}");
             PreviewScene scene = PreviewScene.FromClips(title, clips, sceneKeys, firstIsTruth ? 0 : -1);
             scene.FirstFrame = offset;
+            scene.UpAxisDescription = upDescription;
             if (map != null) scene.Extremities = Extremities(map, first!.Skeleton, tracks[0].Path);
             return scene;
         }
@@ -110,6 +116,33 @@ namespace DeltaInterpolator.Preview
             }
 
             return joints.ToArray();
+        }
+
+        /// <summary>
+        /// The first file's up axis, as the verbs that retarget decide it (<see cref="UpAxisDecision"/>: its rest pose
+        /// and its motion's floor), found by <paramref name="map"/> when it names the hips, head and feet, else by the
+        /// built-in names; null when nothing is turned. A Z-up file is drawn standing, as retarget and bake see it.
+        /// </summary>
+        private static UpAxisDecision? DecideUp(BvhAnimation animation, string path, JointMap? map, UpAxis up, out string description)
+        {
+            ReferencePose rest = ReferencePose.Zero(animation.Skeleton);
+            JointMap? body = map != null && UpAxisDetection.OfPose(rest, map) != null ? map : UpAxisDetection.BodyMap(animation.Skeleton);
+            if (body == null)
+            {
+                if (up == UpAxis.Z)
+                {
+                    throw new DataFormatException(path, "--up z, but the skeleton has no hips, head and feet that a built-in map or --map finds to turn by",
+                        "expected --map naming the rig's Hips, Head, LeftFoot and RightFoot");
+                }
+
+                description = $"up axis {UpAxes.Name(up)}: no hips, head or feet found in {Path.GetFileName(path)} to judge by (--map names them); drawn as written";
+                return null;
+            }
+
+            UpAxisDecision decided = UpAxisDecision.Decide(up, rest, false, animation.Motion, body);
+            description = decided.Description.Replace("turned to the model's Y up", "drawn turned to Y up", StringComparison.Ordinal)
+                .Replace("nothing turned", "drawn as written", StringComparison.Ordinal) + $" (decided on {Path.GetFileName(path)}, applied to every track)";
+            return decided.IsIdentity ? null : decided;
         }
 
         /// <summary>Refuses a file that cannot play beside the first: another skeleton or another frame rate.</summary>

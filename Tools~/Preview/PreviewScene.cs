@@ -250,6 +250,13 @@ namespace DeltaInterpolator.Preview
         }
 
         /// <summary>
+        /// What the files' up axis was taken to be and whether they were turned to stand on Y (e.g. "up axis auto:
+        /// motion Z-up (…), reference pose Z-up (the rest pose); drawn turned to Y up"), for the console; empty for a
+        /// scene not read from files.
+        /// </summary>
+        public string UpAxisDescription { get; set; } = "";
+
+        /// <summary>
         /// Metres per data unit, when known (from the skeleton's leg length for a scene of clips): errors
         /// are then shown in centimetres; null: in data units.
         /// </summary>

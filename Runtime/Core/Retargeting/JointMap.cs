@@ -134,10 +134,11 @@ namespace DeltaInterpolator.Core.Retargeting
 
         /// <summary>
         /// 3ds Max Biped rigs as BVH exporters write them (<c>Bip01_Pelvis</c>, <c>Bip01_L_Thigh</c>, …; spaces become
-        /// underscores). Biped hangs the thighs under <c>Bip01_Spine</c>, so the hips follow the chain
-        /// <c>Bip01_Pelvis</c> → <c>Bip01_Spine</c> and the model's three spine joints map to Spine1..Spine3 (a rig
-        /// with two spine links makes Spine2 up); the clavicles hang under the neck, which the map carries. The
-        /// root node <c>Bip01</c> above the pelvis is unmapped.
+        /// underscores) with the thighs under <c>Bip01_Spine</c>, as Biped links them without its Triangle Pelvis
+        /// option: the hips follow the chain <c>Bip01_Pelvis</c> → <c>Bip01_Spine</c> and the model's three spine
+        /// joints map to Spine1..Spine3 (a rig with two spine links makes Spine2 up); the clavicles hang under the
+        /// neck, which the map carries. The root node <c>Bip01</c> above the pelvis is unmapped.
+        /// <see cref="BipedPelvis"/> is the same rig with the thighs under the pelvis.
         /// </summary>
         public static JointMap Biped { get; } = Build("biped", new[]
         {
@@ -148,10 +149,26 @@ namespace DeltaInterpolator.Core.Retargeting
             "RightShoulder", "Bip01_R_Clavicle", "RightArm", "Bip01_R_UpperArm", "RightForeArm", "Bip01_R_Forearm", "RightHand", "Bip01_R_Hand",
         });
 
-        /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
-        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid, Poser, Biped };
+        /// <summary>
+        /// 3ds Max Biped rigs whose thighs hang under <c>Bip01_Pelvis</c> (Biped's Triangle Pelvis, and exporters that
+        /// relink the legs to the pelvis): the hips are <c>Bip01_Pelvis</c> alone and the model's three spine joints
+        /// map to <c>Bip01_Spine</c>..<c>Bip01_Spine2</c> (a rig with two spine links makes Spine2 up; links above
+        /// <c>Bip01_Spine2</c> are carried between it and the neck). Which of the two Biped maps a rig gets is decided
+        /// by where its thighs hang (<see cref="Detect"/> counts only joints that fit the hierarchy).
+        /// </summary>
+        public static JointMap BipedPelvis { get; } = Build("biped-pelvis", new[]
+        {
+            "Hips", "Bip01_Pelvis", "LeftUpLeg", "Bip01_L_Thigh", "LeftLeg", "Bip01_L_Calf", "LeftFoot", "Bip01_L_Foot", "LeftToe", "Bip01_L_Toe0",
+            "RightUpLeg", "Bip01_R_Thigh", "RightLeg", "Bip01_R_Calf", "RightFoot", "Bip01_R_Foot", "RightToe", "Bip01_R_Toe0",
+            "Spine", "Bip01_Spine", "Spine1", "Bip01_Spine1", "Spine2", "Bip01_Spine2", "Neck", "Bip01_Neck", "Head", "Bip01_Head",
+            "LeftShoulder", "Bip01_L_Clavicle", "LeftArm", "Bip01_L_UpperArm", "LeftForeArm", "Bip01_L_Forearm", "LeftHand", "Bip01_L_Hand",
+            "RightShoulder", "Bip01_R_Clavicle", "RightArm", "Bip01_R_UpperArm", "RightForeArm", "Bip01_R_Forearm", "RightHand", "Bip01_R_Hand",
+        });
 
-        /// <summary>The built-in map called <paramref name="name"/> (lafan1, cmu, mixamo, unity-humanoid, poser, biped), or null.</summary>
+        /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
+        public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid, Poser, Biped, BipedPelvis };
+
+        /// <summary>The built-in map called <paramref name="name"/> (lafan1, cmu, mixamo, unity-humanoid, poser, biped, biped-pelvis), or null.</summary>
         public static JointMap? Named(string name)
         {
             foreach (JointMap map in BuiltIn) if (string.Equals(map.Name, name, StringComparison.OrdinalIgnoreCase)) return map;
@@ -160,7 +177,9 @@ namespace DeltaInterpolator.Core.Retargeting
 
         /// <summary>
         /// The built-in map that finds the most of <paramref name="target"/>'s joints in
-        /// <paramref name="source"/> (all of them when the source follows one of the conventions).
+        /// <paramref name="source"/> where the hierarchy lets them play their part (all of them when the source
+        /// follows one of the conventions): two maps that find the same names — the two Biped layouts — are told
+        /// apart by which one's joints hang where the model's do.
         /// </summary>
         public static JointMap Detect(Skeleton source, Skeleton target)
         {
@@ -170,13 +189,7 @@ namespace DeltaInterpolator.Core.Retargeting
             int bestCount = -1;
             foreach (JointMap map in BuiltIn)
             {
-                int count = 0;
-                for (int j = 0; j < target.JointCount; j++)
-                {
-                    IReadOnlyList<string>? chain = map.SourceChain(target.Names[j]);
-                    if (chain != null && FindChain(source, chain) != null) count++;
-                }
-
+                int count = map.PlacedJoints(source, target);
                 if (count > bestCount)
                 {
                     best = map;
@@ -327,6 +340,46 @@ namespace DeltaInterpolator.Core.Retargeting
             }
 
             return found;
+        }
+
+        /// <summary>
+        /// How many of <paramref name="target"/>'s joints this map finds in <paramref name="source"/> below their
+        /// parent's joint, with no other mapped joint between (what <see cref="MapChains"/> would carry wrongly):
+        /// a thigh under <c>Bip01_Pelvis</c> does not fit a map whose hips end at <c>Bip01_Spine</c>, and a thigh
+        /// under <c>Bip01_Spine</c> does not fit one that maps <c>Bip01_Spine</c> to the model's Spine.
+        /// </summary>
+        private int PlacedJoints(Skeleton source, Skeleton target)
+        {
+            var found = new int[target.JointCount][];
+            var owner = new int[source.JointCount];
+            for (int s = 0; s < owner.Length; s++) owner[s] = -1;
+            for (int j = 0; j < found.Length; j++)
+            {
+                IReadOnlyList<string>? chain = SourceChain(target.Names[j]);
+                int[]? joints = chain == null ? null : FindChain(source, chain);
+                if (joints == null) continue;
+                found[j] = joints;
+                foreach (int s in joints) owner[s] = j;
+            }
+
+            int placed = 0;
+            for (int j = 0; j < found.Length; j++)
+            {
+                if (found[j] == null) continue;
+                int parent = target.Parents[j];
+                if (parent < 0 || found[parent] == null)
+                {
+                    placed++; // the root, or a parent the rig lacks: nothing to hang from
+                    continue;
+                }
+
+                int stop = found[parent][found[parent].Length - 1];
+                int walk = source.Parents[found[j][0]];
+                while (walk >= 0 && walk != stop && owner[walk] < 0) walk = source.Parents[walk];
+                if (walk == stop) placed++;
+            }
+
+            return placed;
         }
 
         /// <summary>The indices of a chain's joints in <paramref name="skeleton"/> (<see cref="FindJoint"/>), or null when any is missing.</summary>

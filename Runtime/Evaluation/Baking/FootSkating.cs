@@ -140,10 +140,32 @@ namespace DeltaInterpolator.Evaluation.Baking
         /// </summary>
         public static bool[] Planted(ReadOnlySpan<double> feet, int footJoints, double frameTime, double ground, double legLength)
         {
+            var grounds = new double[footJoints];
+            Array.Fill(grounds, ground);
+            return Planted(feet, footJoints, frameTime, grounds, legLength);
+        }
+
+        /// <summary>
+        /// The contact labels the network learns and is scored against (issue 29; Python <c>contacts.planted</c>, golden
+        /// vectors in <c>Tests/Fixtures~/contact-labels.json</c>): the rule of <see cref="Planted(ReadOnlySpan{double}, int, double, double, double)"/>
+        /// with each foot joint measured from its own ground level (<see cref="GroundLevels"/>). An ankle stands a
+        /// heel's height above the floor when the foot is flat, more than the 3 % band, so from the lowest joint's
+        /// level (the measure's <see cref="GroundLevel"/>) a CMU ankle was planted on 0.004 % of the training frames;
+        /// from its own, on about 23 % of them, as often as a toe.
+        /// </summary>
+        public static bool[] ContactLabels(ReadOnlySpan<double> feet, int footJoints, double frameTime, double legLength)
+            => Planted(feet, footJoints, frameTime, GroundLevels(feet, footJoints), legLength);
+
+        /// <summary>
+        /// <see cref="Planted(ReadOnlySpan{double}, int, double, double, double)"/> with a ground level per foot joint
+        /// (<paramref name="grounds"/>, one per joint).
+        /// </summary>
+        public static bool[] Planted(ReadOnlySpan<double> feet, int footJoints, double frameTime, ReadOnlySpan<double> grounds, double legLength)
+        {
             int n = footJoints;
+            if (grounds.Length != n) throw new ArgumentException($"{grounds.Length} ground levels for {n} foot joints; expected one per joint", nameof(grounds));
             int frames = feet.Length / (3 * n);
             var planted = new bool[frames * n];
-            double heightLimit = ground + ContactHeight * legLength;
             double speedLimit = ContactSpeed * legLength;
             for (int f = 0; f < frames; f++)
             {
@@ -151,7 +173,7 @@ namespace DeltaInterpolator.Evaluation.Baking
                 if (after == before) continue;
                 for (int k = 0; k < n; k++)
                 {
-                    if (feet[(f * n + k) * 3 + 1] > heightLimit) continue;
+                    if (feet[(f * n + k) * 3 + 1] > grounds[k] + ContactHeight * legLength) continue;
                     int a = (after * n + k) * 3, b = (before * n + k) * 3;
                     double dx = feet[a] - feet[b], dz = feet[a + 2] - feet[b + 2];
                     planted[f * n + k] = Math.Sqrt(dx * dx + dz * dz) / ((after - before) * frameTime) < speedLimit;
@@ -177,6 +199,24 @@ namespace DeltaInterpolator.Evaluation.Baking
             }
 
             return Percentile(lowest, GroundPercentile);
+        }
+
+        /// <summary>
+        /// Each foot joint's own ground level over a span (<paramref name="feet"/>: frames × <paramref name="footJoints"/> × 3
+        /// positions): the <see cref="GroundPercentile"/>th percentile of that joint's height. Empty positions give NaN levels.
+        /// </summary>
+        public static double[] GroundLevels(ReadOnlySpan<double> feet, int footJoints)
+        {
+            int frames = feet.Length / (3 * footJoints);
+            var levels = new double[footJoints];
+            var heights = new double[frames];
+            for (int k = 0; k < footJoints; k++)
+            {
+                for (int f = 0; f < frames; f++) heights[f] = feet[(f * footJoints + k) * 3 + 1];
+                levels[k] = frames == 0 ? double.NaN : Percentile(heights, GroundPercentile);
+            }
+
+            return levels;
         }
 
         /// <summary>The truth scored against itself over the same frames: the floor no method can beat.</summary>

@@ -7,22 +7,29 @@ using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.Retargeting
 {
-    /// <summary>Issue 30: the built-in 3ds Max Biped map (<c>Bip01_*</c>) on a Biped-shaped rig made here: thighs under the spine, clavicles under the neck, two spine links.</summary>
+    /// <summary>Issue 30: the built-in 3ds Max Biped maps (<c>Bip01_*</c>) on Biped-shaped rigs made here: thighs under the spine or the pelvis, clavicles under the neck, two spine links above the first.</summary>
     public sealed class BipedMapTests
     {
-        private static Skeleton BipedRig(Skeleton model)
+        internal static Skeleton BipedRig(Skeleton model, string thighParent = "Bip01_Spine")
         {
             ReferencePose t = ReferencePose.ModelTPose(model);
             Vector3D At(string name) => t.GlobalPosition(model.IndexOf(name));
-            var joints = new List<(string Name, string? Parent, Vector3D At)>
+            // Listed depth first, as a BVH file holds them: the legs before the spine when they hang under the pelvis.
+            var legs = new List<(string Name, string? Parent, Vector3D At)>
             {
-                ("Bip01", null, At("Hips")), ("Bip01_Pelvis", "Bip01", At("Hips")), ("Bip01_Spine", "Bip01_Pelvis", At("Spine")),
-                ("Bip01_L_Thigh", "Bip01_Spine", At("LeftUpLeg")), ("Bip01_L_Calf", "Bip01_L_Thigh", At("LeftLeg")), ("Bip01_L_Foot", "Bip01_L_Calf", At("LeftFoot")), ("Bip01_L_Toe0", "Bip01_L_Foot", At("LeftToe")),
-                ("Bip01_R_Thigh", "Bip01_Spine", At("RightUpLeg")), ("Bip01_R_Calf", "Bip01_R_Thigh", At("RightLeg")), ("Bip01_R_Foot", "Bip01_R_Calf", At("RightFoot")), ("Bip01_R_Toe0", "Bip01_R_Foot", At("RightToe")),
+                ("Bip01_L_Thigh", thighParent, At("LeftUpLeg")), ("Bip01_L_Calf", "Bip01_L_Thigh", At("LeftLeg")), ("Bip01_L_Foot", "Bip01_L_Calf", At("LeftFoot")), ("Bip01_L_Toe0", "Bip01_L_Foot", At("LeftToe")),
+                ("Bip01_R_Thigh", thighParent, At("RightUpLeg")), ("Bip01_R_Calf", "Bip01_R_Thigh", At("RightLeg")), ("Bip01_R_Foot", "Bip01_R_Calf", At("RightFoot")), ("Bip01_R_Toe0", "Bip01_R_Foot", At("RightToe")),
+            };
+            var joints = new List<(string Name, string? Parent, Vector3D At)> { ("Bip01", null, At("Hips")), ("Bip01_Pelvis", "Bip01", At("Hips")) };
+            if (thighParent == "Bip01_Pelvis") joints.AddRange(legs);
+            joints.Add(("Bip01_Spine", "Bip01_Pelvis", At("Spine")));
+            if (thighParent != "Bip01_Pelvis") joints.AddRange(legs);
+            joints.AddRange(new List<(string Name, string? Parent, Vector3D At)>
+            {
                 ("Bip01_Spine1", "Bip01_Spine", At("Spine1")), ("Bip01_Spine2", "Bip01_Spine1", At("Spine2")), ("Bip01_Neck", "Bip01_Spine2", At("Neck")), ("Bip01_Head", "Bip01_Neck", At("Head")),
                 ("Bip01_L_Clavicle", "Bip01_Neck", At("LeftShoulder")), ("Bip01_L_UpperArm", "Bip01_L_Clavicle", At("LeftArm")), ("Bip01_L_Forearm", "Bip01_L_UpperArm", At("LeftForeArm")), ("Bip01_L_Hand", "Bip01_L_Forearm", At("LeftHand")),
                 ("Bip01_R_Clavicle", "Bip01_Neck", At("RightShoulder")), ("Bip01_R_UpperArm", "Bip01_R_Clavicle", At("RightArm")), ("Bip01_R_Forearm", "Bip01_R_UpperArm", At("RightForeArm")), ("Bip01_R_Hand", "Bip01_R_Forearm", At("RightHand")),
-            };
+            });
             var names = new string[joints.Count];
             var parents = new int[joints.Count];
             var offsets = new double[3 * joints.Count];
@@ -36,15 +43,22 @@ namespace DeltaInterpolator.Tests.Retargeting
             return new Skeleton(names, parents, offsets);
         }
 
-        [Test]
-        public void ABipedRigIsDetectedAndMapsBothWays()
+        /// <summary>
+        /// Both layouts Biped writes: thighs under <c>Bip01_Spine</c> (the classic link; two spine links above it, so the
+        /// model's third spine joint is made up) and thighs under <c>Bip01_Pelvis</c> (Triangle Pelvis; the pelvis alone
+        /// plays the hips and Spine..Spine2 are Biped's three links). The first map alone refused the second layout
+        /// ("'LeftUpLeg' maps to 'Bip01_L_Thigh', which is not below 'Bip01_Spine'").
+        /// </summary>
+        [TestCase("Bip01_Spine", "biped", new[] { "Spine2" })]
+        [TestCase("Bip01_Pelvis", "biped-pelvis", new string[0])]
+        public void ABipedRigIsDetectedAndMapsBothWays(string thighParent, string mapName, string[] madeUp)
         {
             Skeleton model = RetargetFixtures.Lafan1();
-            Skeleton biped = BipedRig(model);
-            Assert.That(JointMap.Detect(biped, model), Is.SameAs(JointMap.Biped));
-            Assert.That(JointMap.Named("biped"), Is.SameAs(JointMap.Biped));
+            Skeleton biped = BipedRig(model, thighParent);
+            Assert.That(JointMap.Detect(biped, model).Name, Is.EqualTo(mapName));
+            Assert.That(JointMap.Named(mapName), Is.SameAs(JointMap.Detect(biped, model)));
             SkeletonMap map = SkeletonMap.Create(ReferencePose.Zero(biped), ReferencePose.ModelTPose(model), null, "biped.bvh");
-            Assert.That(map.SynthesizedJoints, Is.EqualTo(new[] { "Spine2" }), "two spine links above Bip01_Spine: the model's third is made up");
+            Assert.That(map.SynthesizedJoints, Is.EqualTo(madeUp));
             Assert.That(map.UnmappedSourceJoints, Is.EqualTo(new[] { "Bip01" }));
             BoneDirections.RequireTPose(map, ReferencePose.ModelTPose(model), BoneDirections.DefaultMaxDegrees, "biped.bvh");
             MotionClip motion = RetargetFixtures.Motion(ReferencePose.Zero(biped), 30, 1.0 / 30.0, 4, 2.0);

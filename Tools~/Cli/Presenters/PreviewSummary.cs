@@ -25,6 +25,7 @@ namespace DeltaInterpolator.Cli.Presenters
                 1 / scene.FrameTime,
                 scene.KeyFrames.Count,
                 scene.Tracks.Count == 1 ? "" : "s"));
+            if (scene.UpAxisDescription.Length > 0) SafeLine("  " + scene.UpAxisDescription);
             if (scene.GroundTruthTrack < 0) return;
             for (int t = 0; t < scene.Tracks.Count; t++)
             {

@@ -17,7 +17,8 @@ namespace DeltaInterpolator.Cli.Retargeting
             ["mixamo"] = "Mixamo",
             ["unity-humanoid"] = "Unity HumanBodyBones",
             ["poser"] = "Poser",
-            ["biped"] = "3ds Max Biped",
+            ["biped"] = "3ds Max Biped (thighs under Bip01_Spine)",
+            ["biped-pelvis"] = "3ds Max Biped (thighs under Bip01_Pelvis)",
         };
 
         /// <summary>Every built-in convention, e.g. "LaFAN1, CMU (MotionBuilder), Mixamo, Unity HumanBodyBones and Poser".</summary>

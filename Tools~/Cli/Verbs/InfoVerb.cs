@@ -5,6 +5,7 @@ using System.Globalization;
 using System.IO;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.IO;
+using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
 using Spectre.Console;
 
@@ -18,21 +19,25 @@ namespace DeltaInterpolator.Cli.Verbs
             Description = "A BVH file, e.g. ../shared/data/lafan1/walk4_subject1.bvh",
         };
 
+        private readonly Option<string> _up = UpAxisArgument.Create();
+
         /// <inheritdoc />
         public Command CreateCommand()
         {
             var command = new Command(
                 "info",
-                "Show a BVH file's joints (parent, channels, offset), frame count, frame time, duration, size and read speed.\n" +
+                "Show a BVH file's joints (parent, channels, offset), frame count, frame time, duration, size and read speed,\n" +
+                "and the up axis retarget and bake would take it to have (--up; the offsets are listed as the file has them).\n" +
                 "A malformed file is reported as FILE:LINE: what was wrong; what was expected (exit status 2). Names are shown with\n" +
                 "control characters escaped and clipped to " + TerminalText.NameLength + " characters; a table lists at most " + MaxJointRows + " joints.\n" +
                 "Example:\n  inbetween info ../shared/data/lafan1/walk4_subject1.bvh");
             command.Arguments.Add(_file);
-            command.SetAction(parse => CliErrors.Guard(() => Run(parse.GetValue(_file)!)));
+            command.Options.Add(_up);
+            command.SetAction(parse => CliErrors.Guard(() => Run(parse.GetValue(_file)!, UpAxisArgument.Parse(parse.GetValue(_up), "info"))));
             return command;
         }
 
-        private static int Run(string path)
+        private static int Run(string path, UpAxis up)
         {
             InputFile.Check(path, "a .bvh file");
 
@@ -92,9 +97,21 @@ namespace DeltaInterpolator.Cli.Verbs
             summary.AddRow("Duration", string.Format(CultureInfo.InvariantCulture, "{0:0.00} s", motion.Duration));
             summary.AddRow("Channels per frame", animation.ChannelCount.ToString(CultureInfo.InvariantCulture));
             summary.AddRow("File size", string.Format(CultureInfo.InvariantCulture, "{0:N0} bytes ({1:0.00} MB)", bytes, bytes / 1e6));
+            summary.AddRow("Up axis", Markup.Escape(UpAxisRow(animation, up)));
             summary.AddRow("Read speed", string.Format(CultureInfo.InvariantCulture, "{0:0} MB/s ({1:0.0} ms; first read with JIT start-up {2:0.0} ms)", bytes / 1e6 / best, best * 1e3, firstSeconds * 1e3));
             AnsiConsole.Write(summary);
             return 0;
+        }
+
+        /// <summary>
+        /// What <c>retarget</c> and <c>bake</c> would decide about the file's up axis with the same <c>--up</c> and the
+        /// built-in joint names (a JSON map there may find the body where the built-in names do not).
+        /// </summary>
+        private static string UpAxisRow(BvhAnimation animation, UpAxis up)
+        {
+            JointMap? body = UpAxisDetection.BodyMap(animation.Skeleton);
+            if (body == null) return $"up axis {UpAxes.Name(up)}: not judged, no hips, head or feet by the built-in names (retarget and bake judge by --map)";
+            return UpAxisDecision.Decide(up, ReferencePose.Zero(animation.Skeleton), false, animation.Motion, body).Description.Replace("turned to the model's Y up", "retarget and bake turn it to Y up", StringComparison.Ordinal);
         }
 
         /// <summary>

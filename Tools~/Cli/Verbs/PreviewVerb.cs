@@ -57,6 +57,8 @@ namespace DeltaInterpolator.Cli.Verbs
             HelpName = "MAP.json",
         };
 
+        private readonly Option<string> _up = UpAxisArgument.Create();
+
         private readonly Option<string> _out = new Option<string>("--out")
         {
             Description = "The HTML file to write (self-contained: opens offline in any browser).",
@@ -90,6 +92,7 @@ namespace DeltaInterpolator.Cli.Verbs
             command.Options.Add(_keys);
             command.Options.Add(_frames);
             command.Options.Add(_map);
+            command.Options.Add(_up);
             command.Options.Add(_out);
             command.Options.Add(_png);
             _output.AddTo(command);
@@ -135,6 +138,7 @@ namespace DeltaInterpolator.Cli.Verbs
 
             (int Start, int End)? range = FrameRangeArgument.Parse(parse.GetValue(_frames));
             int[] keys = ParseKeys(parse.GetValue(_keys));
+            UpAxis up = UpAxisArgument.Parse(parse.GetValue(_up), "preview");
             bool force = parse.GetValue(_output.Force);
             string? mapPath = parse.GetValue(_map);
             if (mapPath != null) InputFile.Check(mapPath, "a JSON joint map");
@@ -151,7 +155,7 @@ namespace DeltaInterpolator.Cli.Verbs
             }
 
             JointMap? map = mapPath == null ? null : JointMap.Load(mapPath);
-            PreviewScene scene = BvhPreview.Build(requests, range, keys, truth != null, map);
+            PreviewScene scene = BvhPreview.Build(requests, range, keys, truth != null, map, up);
             PreviewWriter.WriteHtml(scene, htmlPath);
             PreviewSummary.Page(scene, htmlPath);
             if (pngPath != null)

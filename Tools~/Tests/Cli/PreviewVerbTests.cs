@@ -144,7 +144,8 @@ namespace DeltaInterpolator.Tests.Cli
                     "mixamo" => "Mixamo",
                     "unity-humanoid" => "Unity HumanBodyBones",
                     "poser" => "Poser",
-                    "biped" => "3ds Max Biped",
+                    "biped" => "3ds Max Biped (thighs under Bip01_Spine)",
+                    "biped-pelvis" => "3ds Max Biped (thighs under Bip01_Pelvis)",
                     _ => map.Name,
                 };
                 Assert.That(help, Does.Contain(title), $"the built-in map '{map.Name}'");

@@ -120,6 +120,28 @@ namespace DeltaInterpolator.Tests.Cli
             }
         }
 
+        /// <summary>
+        /// Issue 30: two models whose names share their first 17 characters, scored through a pipe (80 columns): each
+        /// name is printed whole in the legend, never cut in a column header ("DeltaInterpola…").
+        /// </summary>
+        [Test]
+        public void ScoreShowsWholeModelNamesAt80Columns()
+        {
+            string cmu = Path.Combine(Root, "Runtime", "Models", "DeltaInterpolator-CMU.onnx");
+            string lafan1 = Path.Combine(Root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
+            if (!File.Exists(cmu) || !File.Exists(lafan1)) Assert.Ignore("the shipped models are absent; skipping.");
+            string data = Path.Combine(_dir, "data");
+            Directory.CreateDirectory(data);
+            File.Copy(Sample, Path.Combine(data, "09_12.bvh"));
+            File.WriteAllText(Path.Combine(data, "inbetween-data.json"), "{\"defaults\": {\"from_frame\": 1, \"reference_frame\": 0}}");
+            CliRun run = CliHarness.Run("score", data, "--every", "60", "--model", cmu, "--model", lafan1);
+            CliHarness.AssertSuccess(run);
+            string[] lines = run.Stdout.Split('\n');
+            Assert.That(lines, Has.Some.Contains("[1] DeltaInterpolator-CMU"), run.Stdout);
+            Assert.That(lines, Has.Some.Contains("[2] DeltaInterpolator-LaFAN1"), run.Stdout);
+            Assert.That(run.Stdout, Does.Not.Contain("DeltaInterpola…"));
+        }
+
         [Test]
         public void ScoreRefusesAnEmptySelectionAndAManifestWithUnknownFields()
         {

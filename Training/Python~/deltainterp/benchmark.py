@@ -32,6 +32,7 @@ from .facing import yaw_toward
 from .kinematics import forward_kinematics
 from .localize import unlocalize
 from .objective import make_batch, predict
+from .progress import Progress, each
 from .lafan1_statistics import Statistics, load_statistics
 from .sampler import TransitionSampler
 
@@ -80,10 +81,7 @@ def normalise_windows(root_positions: Tensor, local_quaternions: Tensor, facing_
 def load_windows(data_dir: str | Path, window: int = 65, offset: int = 40,
                  subjects: Sequence[int] = TEST_SUBJECTS, progress: bool = True) -> BenchmarkWindows:
     files = lafan1_files(data_dir, tuple(subjects))
-    iterator = files
-    if progress:
-        from tqdm import tqdm
-        iterator = tqdm(files, desc="reading test BVH", unit="file")
+    iterator = each(files, len(files), "reading test BVH", "file", progress)
     roots, quats, names_of, starts_of = [], [], [], []
     names: Optional[List[str]] = None
     parents: Optional[List[int]] = None
@@ -224,10 +222,7 @@ def run_benchmark(data_dir: str | Path, stats_path: str | Path, window: int = 65
     parents = data.parents
     results: Dict[str, Dict[str, Dict[str, float]]] = {m: {k: {} for k in METRICS} for m in
                                                         (["zerovel", "slerp"] + (["model"] if loaded else []))}
-    bar = None
-    if progress and loaded is not None:
-        from tqdm import tqdm
-        bar = tqdm(total=data.count * len(lengths), desc="model", unit="window", dynamic_ncols=True)
+    bar = Progress(data.count * len(lengths), "model", "window") if progress and loaded is not None else None
     for n in lengths:
         missing = slice(PAST, PAST + n)
         gt = forward_kinematics(data.local_quaternions[:, missing], data.root_positions[:, missing], offsets,

@@ -55,6 +55,11 @@ def _prepare(sub) -> None:
     p.add_argument("--input-fps", type=float, help="every file's true frame rate (manifest default)")
     p.add_argument("--map", help="a JSON joint map for every file (manifest default; the format `inbetween retarget --map` reads)")
     p.add_argument("--up", help="every file's up axis: auto, y or z (manifest default \"up\"; `inbetween retarget --up`)")
+    p.add_argument("--accept-reference-pose", action="store_true",
+                   help="keep every file's reference pose even where its spine, neck or leg bones point more than 25° "
+                        "from the model's standing pose (refused by default; the manifest's \"accept_reference_pose\" "
+                        "does it per file). What it let through is printed per file and written into the pack's "
+                        "description; prefer --reference-frame naming a standing frame, or a joint map fix")
     p.add_argument("--time-scales", default="",
                    help="augment with time-scaled copies, e.g. 0.8,1.25 (1.25 = played 25%% slower); trained on, never validated on")
     p.add_argument("--model", help="the .onnx whose skeleton and frame rate are the target (default: the tool's)")
@@ -65,8 +70,8 @@ def _prepare(sub) -> None:
 
 
 def _is_lafan1_folder(args) -> bool:
-    if len(args.data) != 1 or args.holdout or any(getattr(args, k) is not None for k in
-                                                  ("from_frame", "reference_frame", "input_fps", "map", "up")):
+    if len(args.data) != 1 or args.holdout or args.accept_reference_pose or any(
+            getattr(args, k) is not None for k in ("from_frame", "reference_frame", "input_fps", "map", "up")):
         return False
     folder = Path(args.data[0])
     if not folder.is_dir() or (folder / "inbetween-data.json").exists():
@@ -120,7 +125,7 @@ def _run_prepare(args) -> int:
     if args.up is not None and args.up not in UP_AXES:
         raise ValueError(f"--up {args.up[:40]!r}; expected auto, y or z")
     options = {"from_frame": args.from_frame, "reference_frame": args.reference_frame, "fps": args.input_fps,
-               "map": args.map, "up": args.up}
+               "map": args.map, "up": args.up, "accept_reference_pose": True if args.accept_reference_pose else None}
     inputs = _named_inputs(args)
     for source in [open_source(d) for d in args.data]:  # nor one of the BVH files, manifests or maps they name
         plans = plan_files(source, options, args.holdout, [])
@@ -137,6 +142,9 @@ def _run_prepare(args) -> int:
         print(f"  {shown(s.folder)}: {n} files" + (f" (manifest {shown(s.manifest)})" if s.manifest else ""))
     if args.holdout:
         print(f"  held out: files matching {safe(' '.join(args.holdout), LINE_LENGTH)}")
+    for p in originals:  # the explicit override is never silent (as retarget, bake and score report it)
+        if p.accepted:
+            print(f"warning: {shown(p.path)}: {p.accepted}")
     print(f"wrote {shown(args.out)}: {len(originals)} files ({seconds / 60:.1f} min at {1 / pack.frame_time:.0f} fps)"
           + (f" + {len(plans) - len(originals)} time-scaled copies" if len(plans) > len(originals) else "")
           + f", {len(pack.root_positions)} frames, {pack.skeleton.joint_count} joints")
@@ -262,7 +270,7 @@ def _evaluate_export_fixtures(sub) -> None:
                     "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx\n"
                     "Re-export a shipped model in the current contract (weights read back from its whole graph):\n"
                     "  PYTHONPATH=Training/Python~ python3 -m deltainterp export --checkpoint "
-                    "Runtime/Models/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
+                    "Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
     p.add_argument("--checkpoint", required=True,
                    help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")
     p.add_argument("--out", required=True, help="output path ending in .onnx")
@@ -638,8 +646,21 @@ def _run_evaluate_export_fixtures(args) -> int:
     raise ValueError(f"unknown verb {args.verb}")
 
 
+class UsageError(ValueError):
+    """A command line argparse cannot read (an unknown option, a flag given a value, a bad choice): refused in
+    the one-line form like every other bad input, not argparse's wrapped usage block and a second line."""
+
+
+class OneLineArgumentParser(argparse.ArgumentParser):
+    """argparse with its refusals in the refusal contract's form (Documentation~/refusal-contract.md):
+    `error: PROG: what; expected …` on one line, exit 2 (main prints it); --help is unchanged."""
+
+    def error(self, message: str):  # argparse calls this for every unreadable command line
+        raise UsageError(f"{self.prog}: {message.replace(';', ',')}; expected what '{self.prog} --help' lists")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="python3 -m deltainterp",
+    parser = OneLineArgumentParser(prog="python3 -m deltainterp",
                                      description="Train, evaluate and export the Δ-Interpolator. A full recipe: "
                                                  "prepare → train → evaluate → export (see README).")
     sub = parser.add_subparsers(dest="verb", required=True, metavar="VERB")
@@ -674,8 +695,8 @@ def _close_progress_bars() -> None:
 
 
 def _main(argv: Optional[List[str]]) -> int:
-    args = build_parser().parse_args(argv)
     try:
+        args = build_parser().parse_args(argv)
         if args.verb == "prepare":
             return _run_prepare(args)
         if args.verb == "train":

@@ -1,11 +1,14 @@
 """Foot contacts the network predicts (contract version 3's `foot_contacts`): labels, a contact head trained on a
 frozen trunk, and precision / recall of planted frames in bakes.
 
-Labels are the skating measure's own rule (C# `FootSkating.Planted`, what the lockers label from motion today)
+Labels are the skating measure's rule with a ground level per foot joint (C# `FootSkating.ContactLabels`)
 applied to the ground truth: a foot joint (contract.CONTACT_JOINTS: ankle and toe of each side, left first) is
-planted on a frame when it stands within 3 % of a leg length of the clip's ground level (the 5th percentile over
-the span's frames of the lowest foot-joint height) and its horizontal speed (central differences, one-sided at the
-span's ends) is below 15 % of a leg length per second.
+planted on a frame when it stands within 3 % of a leg length of its own ground level (the 5th percentile over the
+span's frames of that joint's height) and its horizontal speed (central differences, one-sided at the span's ends)
+is below 15 % of a leg length per second. A joint's own level, because an ankle stands a heel's height above the
+floor when the foot is flat: measured from the toe's level (the skating measure's one ground level, the lowest
+joint's), the rule planted a CMU ankle on 0.004 % of the training frames, so the ankles could be neither learnt
+nor scored; each joint from its own level, ankles and toes are each planted on about 23 % of them.
 
 The head sits on the query tokens after the trunk's last block. Training it alone (`train_contact_head`) leaves
 every weight the motion outputs depend on as it was, so the motion of the model it starts from is unchanged
@@ -71,18 +74,65 @@ def foot_positions(root_positions, local_quaternions, skeleton) -> np.ndarray:
     return np.concatenate(out) if out else np.zeros((0, len(feet), 3))
 
 
+def ground_levels(feet: np.ndarray) -> np.ndarray:
+    """(joints,) each foot joint's own ground level over a span's positions `feet` (frames, joints, 3): the
+    GROUND_PERCENTILE-th percentile of its height (linear, as C# `FootSkating.GroundLevels`)."""
+    return np.percentile(feet[:, :, 1], GROUND_PERCENTILE, axis=0)
+
+
 def planted(feet: np.ndarray, frame_time: float, leg: float) -> np.ndarray:
     """(frames, 4) flags of the rule above for one span's foot-joint positions `feet` (frames, 4, 3): C#
-    `FootSkating.Planted` with `FootSkating.GroundLevel` of the same span."""
+    `FootSkating.ContactLabels` of the same span."""
     frames = feet.shape[0]
     if frames < 2:
         return np.zeros(feet.shape[:2], dtype=bool)
-    ground = float(np.percentile(feet[:, :, 1].min(axis=1), GROUND_PERCENTILE))  # linear, as the C# Percentile
+    ground = ground_levels(feet)[None, :]
     before = np.maximum(np.arange(frames) - 1, 0)
     after = np.minimum(np.arange(frames) + 1, frames - 1)
     d = feet[after] - feet[before]
     speed = np.sqrt(d[..., 0] ** 2 + d[..., 2] ** 2) / ((after - before)[:, None] * frame_time)
     return (feet[:, :, 1] <= ground + CONTACT_HEIGHT * leg) & (speed < CONTACT_SPEED * leg)
+
+
+def contact_label_vectors() -> Dict:
+    """Golden vectors of the label rule for C# (`FootSkating.ContactLabels`): synthetic spans of foot-joint
+    positions (a walk on a raised floor whose ankles stand a heel's height above their toes, with capture noise;
+    the same crawling slowly; a two-frame span; a one-frame span) with each joint's ground level and planted flags
+    as `planted` gives them."""
+    rng = np.random.default_rng(29)
+    cases = []
+
+    def walk(frames: int, floor: float, stride: float, noise: float) -> np.ndarray:
+        t = np.arange(frames) / 30.0
+        feet = np.zeros((frames, 4, 3))
+        for side in range(2):
+            phase = 2 * np.pi * 1.1 * t + np.pi * side
+            swing = np.maximum(np.sin(phase), 0.0)        # half of each cycle in the air
+            for joint, (height, lead) in enumerate(((0.08, 0.0), (0.02, 0.14))):
+                k = 2 * side + joint
+                lift = swing * (0.12 if joint == 0 else 0.07)  # the heel leaves first and higher
+                feet[:, k, 0] = 0.1 * side + rng.normal(0, noise, frames)
+                feet[:, k, 1] = floor + height + lift + rng.normal(0, noise, frames)
+                feet[:, k, 2] = lead + np.cumsum(swing) * stride / 8  # forward only while in the air
+        return feet
+
+    for name, feet in (("walk", walk(48, 0.31, 0.6, 0.002)), ("slow", walk(40, -0.2, 0.05, 0.001)),
+                       ("two-frames", walk(2, 0.0, 0.6, 0.0)), ("one-frame", walk(1, 0.0, 0.6, 0.0))):
+        frame_time, leg = 1.0 / 30.0, 0.9
+        cases.append({"name": name, "frame_time": frame_time, "leg_length": leg,
+                      "feet": feet.reshape(-1).tolist(),
+                      "ground_levels": ground_levels(feet).tolist() if len(feet) else [],
+                      "planted": planted(feet, frame_time, leg).astype(int).reshape(-1).tolist()})
+    return {"rule": "planted: height <= own ground (5th percentile of the joint's height) + 0.03 leg and "
+                    "horizontal central-difference speed < 0.15 leg/s; frames x 4 joints (LeftFoot, LeftToe, "
+                    "RightFoot, RightToe), row-major", "cases": cases}
+
+
+def write_contact_label_vectors(path) -> Path:
+    """Writes `contact_label_vectors()` to `path` (Tests/Fixtures~/contact-labels.json)."""
+    path = Path(path)
+    safe_output.write_text(path, json.dumps(contact_label_vectors(), indent=1) + "\n")
+    return path
 
 
 def pack_leg_length(pack: MotionPack) -> float:
@@ -232,10 +282,9 @@ MIN_PLANTED_SHARE = 0.05  # a channel planted on fewer of the scored frames does
 def choose_threshold(counts: Dict[int, ContactCounts], thresholds: Sequence[float] = THRESHOLDS) -> Tuple[float, float]:
     """The threshold whose worst precision or recall over every spacing and channel is highest (ties: the one
     nearer 0.5), and that worst value. Channels the rule plants on under MIN_PLANTED_SHARE of the scored frames
-    are left out of the choice (on the CMU skeleton the rule almost never plants an ankle — it stands higher above
-    the ground than the 3 % band: 0.004 % of the training frames, 0.8 % and 1.3 % of the validation tails' —
-    while it plants a toe on about a third of them; a few crouching frames would decide the threshold for all
-    four channels)."""
+    are left out of the choice (a clip set whose rule plants a joint on a few crouching frames only would let
+    those frames decide the threshold for all four channels; with a ground level per joint every CMU channel is
+    planted on about a quarter of the frames, so all four choose)."""
     worst = np.full(len(thresholds), np.inf)
     for c in counts.values():
         used = c.actual >= MIN_PLANTED_SHARE * max(c.frames, 1)
@@ -508,5 +557,5 @@ def train_contact_head(cfg: ContactTrainConfig, progress: bool = True) -> Path:
     return ckpt_path
 
 
-__all__ = ["planted", "pack_labels", "bake_contacts", "contact_scores", "choose_threshold", "ContactTrainConfig",
+__all__ = ["ground_levels", "planted", "pack_labels", "bake_contacts", "contact_scores", "choose_threshold", "ContactTrainConfig",
            "train_contact_head", "initial_model"]

@@ -17,6 +17,7 @@ from . import safe_output
 from .bvh import lafan1_files, read_bvh, subject_of
 from .skeleton import Skeleton, with_offsets
 from .lafan1_statistics import load_statistics
+from .progress import each
 
 TRAIN_SUBJECTS = (1, 2, 3, 4)
 TEST_SUBJECTS = (5,)
@@ -50,11 +51,7 @@ def prepare(data_dir: str, out: str, stats: Optional[str] = None, subjects=TRAIN
     roots, quats, names = [], [], []
     skeleton = None
     frame_time = 1.0 / 30
-    iterator = files
-    if progress:
-        from tqdm import tqdm
-        iterator = tqdm(files, desc="reading BVH", unit="file")
-    for f in iterator:
+    for f in each(files, len(files), "reading BVH", "file", progress):
         m = read_bvh(f)
         if skeleton is None:
             skeleton, frame_time = m.skeleton, m.frame_time

@@ -48,6 +48,7 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 from . import safe_output
+from .progress import Progress
 from .safe_input import check_regular
 from .terminal_text import NAME_LENGTH, safe
 
@@ -71,7 +72,8 @@ class FilePlan:
     time_scale: float = 1.0     # > 1: played slower (more frames), < 1: faster; 1 = as captured
     group: str = ""
     up: Optional[str] = None    # the file's up axis for `retarget --up` (auto, y, z); None: the tool's default (auto)
-    accept_reference_pose: bool = False  # `retarget --accept-reference-pose`: the manifest's explicit override of the humanoid rule
+    accept_reference_pose: bool = False  # `retarget --accept-reference-pose`: the manifest's or prepare's explicit override of the humanoid rule
+    accepted: str = ""          # what the override let through, as `retarget` reported it ("" when nothing was off)
 
 
 @dataclass
@@ -324,7 +326,9 @@ def plan_files(source: DataSource, options: Dict, holdout: Sequence[str], time_s
             plans.append(FilePlan(path, name, str(source.folder), int(settings.get("from_frame") or 0),
                                   settings.get("reference_frame"), settings.get("fps"), map_path, scale,
                                   up=settings.get("up"),
-                                  accept_reference_pose=settings.get("accept_reference_pose") is True))
+                                  # prepare --accept-reference-pose applies to every file, as score's does
+                                  accept_reference_pose=settings.get("accept_reference_pose") is True
+                                  or options.get("accept_reference_pose") is True))
     if source.groups and plans:
         names = sorted({p.name for p in plans})
         groups = dict(zip(names, subject_groups(source.groups, names, str(source.manifest or source.folder))))
@@ -493,6 +497,22 @@ def _cache_key(plan: FilePlan, args: List[str], version: str) -> str:
     return h.hexdigest()[:20]
 
 
+ACCEPTED = "reference pose accepted by --accept-reference-pose"  # how `retarget` starts its report of the override
+
+
+def accepted_note(stdout: str) -> str:
+    """What `retarget --accept-reference-pose` let through, from its console (its last line, wrapped at the
+    console's width): "reference pose accepted by --accept-reference-pose although 2 bone(s) point …", or ""."""
+    text = " ".join(stdout.split())
+    start = text.find(ACCEPTED)
+    return safe(text[start:], 600) if start >= 0 else ""
+
+
+def _accepted_path(target: Path) -> Path:
+    """Beside a cached retargeted file: what the override let through, so a cache hit reports it too."""
+    return target.with_name(target.stem + ".accepted.txt")
+
+
 def _temporary(target: Path, i: int) -> Path:
     return target.with_name(f".{target.stem}.{os.getpid()}.{i}.tmp.bvh")
 
@@ -518,10 +538,7 @@ def retarget_all(plans: List[FilePlan], cache: Path, model: Optional[str] = None
         outputs[i] = target
         if not target.exists():
             work.append((i, plan, target))
-    bar = None
-    if progress and work:
-        from tqdm import tqdm
-        bar = tqdm(total=len(work), desc="retargeting (inbetween retarget)", unit="file")
+    bar = Progress(len(work), "retargeting (inbetween retarget)", "file") if progress and work else None
     running: Dict[int, subprocess.Popen] = {}
     lock = threading.Lock()
     stopping = threading.Event()
@@ -547,8 +564,16 @@ def retarget_all(plans: List[FilePlan], cache: Path, model: Optional[str] = None
             if tmp.exists():
                 tmp.unlink()
             message = (err.strip().splitlines() or out.strip().splitlines() or ["no message"])[-1]
+            if "; expected " in message:  # the tool's own refusal already says what to do: one remedy, not two
+                named = _as_argument(plan.path) + ": "  # the tool names the file as it was given: said once
+                raise ValueError(f"{plan.path}: `inbetween retarget` refused it (exit {child.returncode}): "
+                                 + (message[len(named):] if message.startswith(named) else message))
             raise ValueError(f"{plan.path}: `inbetween retarget` failed (exit {child.returncode}): {message}; "
                              "expected a humanoid BVH the built-in joint maps or the manifest's \"map\" cover")
+        if plan.accept_reference_pose:
+            note = accepted_note(out)
+            if note:
+                safe_output.write_text(_accepted_path(target), note + "\n")
         os.replace(tmp, target)
         if bar is not None:
             bar.update(1)
@@ -620,6 +645,10 @@ def prepare_any(data: Sequence[str], out: str, holdout: Sequence[str] = (), opti
     if not plans:
         raise ValueError(f"{', '.join(data)}: no BVH files left (after --holdout and \"skip\"); expected *.bvh files")
     outputs = retarget_all(plans, Path(cache), model, jobs, progress)
+    for plan, path in zip(plans, outputs):
+        note = _accepted_path(path)
+        if plan.accept_reference_pose and note.is_file():
+            plan.accepted = note.read_text(encoding="utf-8").strip()
     roots, quats, names, augmented, groups = [], [], [], [], []
     skeleton, frame_time = None, None
     for plan, path in zip(plans, outputs):
@@ -642,9 +671,13 @@ def prepare_any(data: Sequence[str], out: str, holdout: Sequence[str] = (), opti
     originals = sum(1 for a in augmented if not a)
     minutes = sum(len(r) for r, a in zip(roots, augmented) if not a) * frame_time / 60
     parts = [f"{sum(1 for p in s.plans if p.time_scale == 1.0)} files of {s.folder.name}" for s in sources]
+    accepted = [p for p in plans if p.accepted and p.time_scale == 1.0]
     description = (f"{originals} files ({minutes:.1f} min at {1 / frame_time:.0f} fps): " + ", ".join(parts)
                    + (f"; held out: {' '.join(holdout)}" if holdout else "")
                    + (f"; time-scaled copies x{', x'.join(f'{t:g}' for t in time_scales)}" if time_scales else "")
+                   + (f"; {len(accepted)} reference pose(s) kept by --accept-reference-pose that the 25° humanoid "
+                      f"rule refuses: " + "; ".join(f"{p.name}: {p.accepted[len(ACCEPTED):].strip()}" for p in accepted)
+                      if accepted else "")
                    + "." + "".join(f" {s.licence}" for s in sources if s.licence))
     pack = MotionPack(skeleton, names, starts, np.concatenate(roots), np.concatenate(quats), frame_time,
                       augmented=np.asarray(augmented, dtype=bool), description=description)

@@ -20,6 +20,7 @@ import torch
 from . import contract as C
 from . import quaternions, safe_output
 from .checkpoint import LoadedModel, load_checkpoint, save_checkpoint_file
+from .contacts import write_contact_label_vectors
 from .export import export_model
 from .kinematics import forward_kinematics
 from .lafan1 import lafan1_skeleton
@@ -222,7 +223,8 @@ def check_golden_against_onnx(doc: Dict, onnx_path: Path, tolerance: float = 1e-
 def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -> Dict[str, Path]:
     """tiny-model.pt, tiny-model{,.keys,.frame}.onnx and golden.json in `out_dir` (no contact output), and the
     same network with a contact head: tiny-model-contacts.pt, tiny-model-contacts{,.keys,.frame}.onnx and
-    golden-contacts.json (whose outputs also hold `foot_contacts`)."""
+    golden-contacts.json (whose outputs also hold `foot_contacts`); contact-labels.json, the contact label rule's
+    golden vectors."""
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise ValueError(f"{out}: is a file, not a folder; expected the fixtures folder (Tests/Fixtures~)")
@@ -231,7 +233,8 @@ def write_fixtures(out_dir: str | Path, data_dir: Optional[str | Path] = None) -
     paths = _write_model_fixtures(out, make_tiny_model(skeleton), MODEL_NAME, "golden.json")
     contacts = _write_model_fixtures(out, make_tiny_model(skeleton, contacts=True), CONTACTS_MODEL_NAME,
                                      "golden-contacts.json")
-    return {**paths, **{f"contacts_{k}": v for k, v in contacts.items()}}
+    labels = write_contact_label_vectors(out / "contact-labels.json")
+    return {**paths, **{f"contacts_{k}": v for k, v in contacts.items()}, "contact_labels": labels}
 
 
 def _write_model_fixtures(out: Path, loaded: LoadedModel, name: str, golden_name: str) -> Dict[str, Path]:

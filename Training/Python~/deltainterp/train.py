@@ -28,6 +28,7 @@ from .localize import unlocalize
 from .objective import (SkeletonTensors, foot_joint_indices, foot_skating, leg_length, loss, make_batch, predict,
                         span_feet)
 from .plots import plot_training
+from .progress import Progress
 from .sampler import TransitionSampler
 from .warm_start import load_onnx_weights
 
@@ -223,6 +224,7 @@ def validation_metrics(model: DeltaInterpolator, pack: MotionPack, val_starts: n
 
 VALIDATION_SHORT_PASTS = (1, 5)   # besides P = 10, when training over several past lengths
 VALIDATION_LONG_GAPS = (60,)      # besides 5, 15, 30, when --max-gap reaches them (a key every 2 s at 30 fps)
+LOG_EVERY = 50                    # steps per log.csv row, and per progress line off a terminal
 
 
 def initial_weights(path: str, config: ModelConfig) -> Dict[str, torch.Tensor]:
@@ -618,13 +620,10 @@ def run_steps(run: TrainingRun, source: WindowSource) -> None:
     # Long gaps are validated on windows of their own length (fewer files have such tails).
     long_gaps = tuple(n for n in VALIDATION_LONG_GAPS if n <= cfg.max_gap)
     long_val = {n: split_windows(run.pack, validation_length=10 + n + 1)[1] for n in long_gaps}
-    # A terminal gets a progress bar; a log file (nohup, CI) one line per log interval instead of
-    # thousands of carriage-return redraws.
-    line_progress = run.speaks and not sys.stderr.isatty()
-    if run.speaks and not line_progress:
-        from tqdm import tqdm
-        run.bar = tqdm(total=cfg.steps, initial=run.step, desc=f"train {cfg.preset}", unit="step",
-                       dynamic_ncols=True)
+    # A terminal gets a progress bar; a log file (nohup, CI) one line per log interval (deltainterp.progress,
+    # as prepare and evaluate): the loss shown is the mean since the last log row.
+    if run.speaks:
+        run.bar = Progress(cfg.steps, f"train {cfg.preset}", "step", every=LOG_EVERY, initial=run.step)
     run.started = time.time()
     window_losses: List[Dict[str, float]] = []
     run.model.train()
@@ -633,15 +632,11 @@ def run_steps(run: TrainingRun, source: WindowSource) -> None:
         window_losses.append(values)
         step = run.step
         if run.rank == 0 and run.bar is not None:
-            run.bar.update(1)
-            run.bar.set_postfix(loss=f"{values['total']:.4f}", lr=f"{lr:.1e}", n=layout.gap)
-        if run.rank == 0 and (step % 50 == 0 or step == cfg.steps):
-            mean = float(np.mean([w["total"] for w in window_losses]))
+            mean = sum(w["total"] for w in window_losses) / len(window_losses)
+            run.bar.update(1, loss=f"{mean:.4f}", lr=f"{lr:.1e}")
+        if run.rank == 0 and (step % LOG_EVERY == 0 or step == cfg.steps):
             write_log_row(run, window_losses, lr)
             window_losses.clear()
-            if line_progress:
-                print(f"train {cfg.preset}: step {step}/{cfg.steps}  loss {mean:.4f}  lr {lr:.1e}  "
-                      f"{time.time() - run.started:.0f} s", flush=True)  # stdout: stderr keeps one line per error
         if run.rank == 0 and len(run.val_starts) > 0 and (step % cfg.validate_every == 0 or step == cfg.steps):
             validate(run, long_val)
         out_of_time = time_is_up(run)

@@ -32,23 +32,37 @@ def _cli(*args):
 
 
 # -- the label rule ----------------------------------------------------------------------------------------
-def test_planted_follows_the_skating_measures_rule():
+def test_planted_follows_the_skating_measures_rule_with_a_ground_level_per_joint():
     leg, dt = 100.0, 1.0 / 30.0
     frames = 6
     feet = np.zeros((frames, 4, 3))
     t = np.arange(frames)
-    feet[:, 1, 1] = 3.5                  # 3.5 % of a leg above the ground: above the 3 % band
+    feet[:, 1, 1] = 8.0                  # an ankle a heel's height (8 % of a leg) above the toes' floor ...
+    feet[4:, 1, 1] = 11.5                # ... lifted 3.5 % of a leg above its own level on the last two frames
     feet[:, 2, 0] = 0.6 * t              # 18 leg-% per second: faster than 15 %
     feet[:, 3, 0] = 0.4 * t              # 12 % per second: slow enough
     feet[:, 3, 1] = 2.9                  # and inside the height band
     got = K.planted(feet, dt, leg)
-    assert got[:, 0].all() and not got[:, 1].any() and not got[:, 2].any() and got[:, 3].all()
-    # the ground is the 5th percentile of each frame's lowest joint: a clip standing on a raised floor
+    assert got[:, 0].all() and not got[:, 2].any() and got[:, 3].all()
+    # each joint from its own ground level: the ankle stands on its floor until it lifts (the skating measure's
+    # one level, the lowest joint's, would never plant it)
+    assert got[:, 1].tolist() == [True, True, True, True, False, False]
+    assert K.ground_levels(feet).tolist() == [0.0, 8.0, 0.0, 2.9]
+    # a clip standing on a raised floor is labelled the same
     assert (K.planted(feet + np.array([0.0, 40.0, 0.0]), dt, leg) == got).all()
     # one frame lifted: that frame alone stops being planted (its neighbours' central speeds stay small)
     lifted = feet.copy()
     lifted[3, 0, 1] = 10.0
     assert K.planted(lifted, dt, leg)[:, 0].tolist() == [True, True, True, False, True, True]
+
+
+def test_the_label_rules_golden_vectors_are_what_the_rule_gives_today():
+    """Tests/Fixtures~/contact-labels.json (C# `FootSkating.ContactLabels` replays it) is the rule's output now."""
+    stored = json.loads((FIXTURES / "contact-labels.json").read_text())
+    assert stored == json.loads(json.dumps(K.contact_label_vectors()))
+    walk = next(c for c in stored["cases"] if c["name"] == "walk")
+    flags = np.array(walk["planted"]).reshape(-1, 4)
+    assert 0.2 < flags.mean() < 0.8 and flags[:, 0].any() and flags[:, 1].any()  # both joints of a foot plant
 
 
 def test_counts_give_precision_and_recall_per_joint():

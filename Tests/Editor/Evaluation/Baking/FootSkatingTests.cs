@@ -4,6 +4,7 @@ using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Bvh;
 using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Json;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Evaluation.Baking;
@@ -135,6 +136,53 @@ namespace DeltaInterpolator.Tests.Baking
             Assert.That(floor.ContactSamples, Is.GreaterThan(1000));
             Assert.That(floor.MeanSpeed, Is.LessThan(0.05), "motion capture's planted feet creep, but slowly");
             Assert.That(skating.MeanSpeed, Is.GreaterThan(10 * floor.MeanSpeed));
+        }
+
+        [Test]
+        public void ContactLabelsReplayPythonsGoldenVectors()
+        {
+            // Tests/Fixtures~/contact-labels.json: Python's `contacts.planted` (the labels the network learns and is
+            // scored against) on synthetic walks; C# must give the same ground level per joint and the same flags.
+            string? root = TestEnvironment.RepositoryRoot;
+            string path = root == null ? "" : Path.Combine(root, "Tests", "Fixtures~", "contact-labels.json");
+            if (!File.Exists(path)) Assert.Ignore($"Tests/Fixtures~/contact-labels.json not found above {AppContext.BaseDirectory}; skipping.");
+            JsonValue doc = JsonValue.Parse(File.ReadAllText(path), path);
+            int cases = 0, planted = 0;
+            foreach (JsonValue c in doc.ExpectMember("cases").ExpectArray("cases"))
+            {
+                string name = c.ExpectMember("name").ExpectString("name");
+                double[] feet = c.ExpectMember("feet").ExpectNumbers("feet", -1);
+                double[] levels = c.ExpectMember("ground_levels").ExpectNumbers("ground_levels", 4);
+                double[] flags = c.ExpectMember("planted").ExpectNumbers("planted", feet.Length / 3);
+                double frameTime = c.ExpectMember("frame_time").ExpectNumber("frame_time"), leg = c.ExpectMember("leg_length").ExpectNumber("leg_length");
+                double[] got = FootSkating.GroundLevels(feet, 4);
+                for (int k = 0; k < 4; k++) Assert.That(got[k], Is.EqualTo(levels[k]).Within(1e-12), $"{name}: ground level of joint {k}");
+                bool[] labels = FootSkating.ContactLabels(feet, 4, frameTime, leg);
+                for (int i = 0; i < labels.Length; i++) Assert.That(labels[i], Is.EqualTo(flags[i] != 0), $"{name}: frame {i / 4}, joint {i % 4}");
+                foreach (bool b in labels) planted += b ? 1 : 0;
+                cases++;
+            }
+
+            Assert.That(cases, Is.EqualTo(4));
+            Assert.That(planted, Is.GreaterThan(50), "the walks plant both joints of each foot");
+        }
+
+        [Test]
+        public void AnAnkleStandingAHeelAboveTheToeIsPlantedFromItsOwnGroundLevel()
+        {
+            // Two joints of one foot standing still, the ankle 8 % of a leg above the toe: the measure's one ground
+            // level (the lowest joint's) plants the toe only; the contact labels plant both.
+            var feet = new double[10 * 2 * 3];
+            for (int f = 0; f < 10; f++) feet[(f * 2) * 3 + 1] = 0.08;
+            bool[] one = FootSkating.Planted(feet, 2, FrameTime, FootSkating.GroundLevel(feet, 2), 1.0);
+            bool[] own = FootSkating.ContactLabels(feet, 2, FrameTime, 1.0);
+            for (int f = 0; f < 10; f++)
+            {
+                Assert.That(one[f * 2], Is.False, $"frame {f}: ankle from the toe's level");
+                Assert.That(own[f * 2] && own[f * 2 + 1] && one[f * 2 + 1], Is.True, $"frame {f}");
+            }
+
+            Assert.Throws<ArgumentException>(() => FootSkating.Planted(feet, 2, FrameTime, new double[1], 1.0));
         }
 
         private static void LiftLeftFoot(MotionClip clip, int frame, double height)

@@ -18,7 +18,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// with the shipped default model and SLERP at keys every 15 and 30 frames, and each filled clip is locked
     /// twice: with the contacts <see cref="FootLocker"/> labels from the keys and the filled motion (what
     /// <c>bake --feet lock</c> does), and with the truth's own contacts (the measure's rule,
-    /// <see cref="FootSkating.Planted"/>), which no bake knows. The second separates what locking reaches when
+    /// <see cref="FootSkating.Planted(System.ReadOnlySpan{double}, int, double, double, double)"/>), which no bake knows. The second separates what locking reaches when
     /// contacts are known from what labelling them loses; every skating sample (a truth-planted foot joint on a
     /// filled frame) is also split by the locker's state there: held, held but out of the leg's reach, easing in,
     /// easing out, or free. Prints the table; asserts the ordering the analysis rests on.
@@ -34,7 +34,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void LockingWithTheTruthsContactsSkatesLessThanWithLabelledOnesAndBothLessThanNone(int every)
         {
             string lafan = TestEnvironment.RequireLafan1();
-            string modelPath = Path.Combine(Path.GetDirectoryName(ShippedModelTests.RequireShippedModel())!, "DeltaInterpolator-CMU.onnx");
+            string modelPath = ShippedModelTests.RequireDefaultModel();
             if (!File.Exists(modelPath)) Assert.Ignore($"{modelPath} not found; skipping.");
             using Inbetweener model = OnnxRuntimeInbetweener.Load(modelPath);
             var totals = new Totals[2];

@@ -17,6 +17,8 @@ namespace UnityEditor
 
         public static int IntField(string label, int value, params GUILayoutOption[] options) => throw null!;
 
+        public static float Slider(string label, float value, float leftValue, float rightValue, params GUILayoutOption[] options) => throw null!;
+
         public static void HelpBox(string message, MessageType type) => throw null!;
     }
 }

@@ -7,6 +7,8 @@ namespace UnityEditor
     {
         public static void RegisterCreatedObjectUndo(Object objectToUndo, string name) => throw null!;
 
+        public static void RegisterCompleteObjectUndo(Object objectToUndo, string name) => throw null!;
+
         public static void RecordObject(Object objectToUndo, string name) => throw null!;
     }
 }

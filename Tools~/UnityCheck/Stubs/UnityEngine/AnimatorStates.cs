@@ -91,5 +91,9 @@ namespace UnityEngine
         public void PlayInFixedTime(int stateNameHash, int layer, float fixedTime) => throw null!;
 
         public static int StringToHash(string name) => throw null!;
+
+        public void SetBool(string name, bool value) => throw null!;
+
+        public void SetTrigger(string name) => throw null!;
     }
 }

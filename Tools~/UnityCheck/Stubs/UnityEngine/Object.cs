@@ -1,9 +1,26 @@
 namespace UnityEngine
 {
     // source: unity:Runtime/Export/Scripting/UnityEngineObject.bindings.cs
+    [System.Flags]
+    public enum HideFlags
+    {
+        None = 0,
+        HideInHierarchy = 1,
+        HideInInspector = 2,
+        DontSaveInEditor = 4,
+        NotEditable = 8,
+        DontSaveInBuild = 16,
+        DontUnloadUnusedAsset = 32,
+        DontSave = DontSaveInEditor | DontSaveInBuild | DontUnloadUnusedAsset,
+        HideAndDontSave = HideInHierarchy | DontSaveInEditor | NotEditable | DontSaveInBuild | DontUnloadUnusedAsset,
+    }
+
+    // source: unity:Runtime/Export/Scripting/UnityEngineObject.bindings.cs
     public partial class Object
     {
         public string name { get => throw null!; set => throw null!; }
+
+        public HideFlags hideFlags { get => throw null!; set => throw null!; }
 
         public static void DestroyImmediate(Object obj) => throw null!;
 

@@ -22,5 +22,7 @@ namespace UnityEngine
         public Transform GetChild(int index) => throw null!;
 
         public Transform Find(string n) => throw null!;
+
+        public void SetPositionAndRotation(Vector3 position, Quaternion rotation) => throw null!;
     }
 }

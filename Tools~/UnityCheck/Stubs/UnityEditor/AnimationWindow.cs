@@ -1,0 +1,10 @@
+using UnityEngine;
+
+namespace UnityEditor
+{
+    // source: unity:Editor/Mono/Animation/AnimationWindow/AnimationWindow.cs
+    public sealed partial class AnimationWindow : EditorWindow
+    {
+        public AnimationClip animationClip { get => throw null!; set => throw null!; }
+    }
+}
