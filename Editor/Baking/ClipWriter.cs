@@ -7,10 +7,15 @@ using UnityEngine;
 namespace DeltaInterpolator.Editor.Baking
 {
     /// <summary>
-    /// Writes Core's <see cref="ClipCurve"/>s into a new <see cref="AnimationClip"/> asset, with Undo.
-    /// An existing asset is never replaced: the user is asked, and the clip is saved beside it under a
-    /// new name or not at all.
+    /// Writes Core's <see cref="ClipCurve"/>s into a new <see cref="AnimationClip"/> asset. An existing asset is never
+    /// replaced: the user is asked, and the clip is saved beside it under a new name or not at all.
     /// </summary>
+    /// <remarks>
+    /// The bake is an asset operation, not an edit: like Unity's own <i>Assets → Create</i>, it is not on the Undo stack
+    /// (delete the <c>.anim</c> in the Project window to take it back). Registering the new clip with
+    /// <c>Undo.RegisterCreatedObjectUndo</c>, as before, made Undo destroy the clip in memory and leave its <c>.anim</c> on
+    /// disk: half undone.
+    /// </remarks>
     internal static class ClipWriter
     {
         /// <summary>
@@ -45,7 +50,6 @@ namespace DeltaInterpolator.Editor.Baking
             }
 
             AssetDatabase.CreateAsset(clip, path);
-            Undo.RegisterCreatedObjectUndo(clip, "Bake in-betweens");
             AssetDatabase.SaveAssets();
             EditorGUIUtility.PingObject(clip);
             return clip;

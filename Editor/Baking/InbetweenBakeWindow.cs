@@ -159,7 +159,7 @@ namespace DeltaInterpolator.Editor.Baking
             if (_character == null) return "Assign the character (the GameObject with the Animator the clips animate).";
             if (_character.transform.GetComponent<Animator>() == null) return $"{_character.name} has no Animator; assign the GameObject that holds it.";
             if (_settings == null) return "Assign the in-betweener settings (the rig, joint map and renames the component uses).";
-            if (ModelAsset() == null) return "Assign a model asset here or in the settings (Assets → Create → Δ-Interpolator → In-betweening Model (shipped default)).";
+            if (ModelAsset() == null) return "Assign a model asset here or in the settings (Assets → Create → Δ-Interpolator → In-betweening Model (shipped default), or In-betweening Model for your own graphs).";
             if (_pastFrames < 1) return "Past keys must be at least 1.";
             if (_source == KeySource.ClipKeyframes) return _keyClip == null ? "Assign the clip whose keyframes are the key poses." : null;
             if (_source == KeySource.EveryN)
@@ -228,7 +228,7 @@ namespace DeltaInterpolator.Editor.Baking
                     double rate = contract.FramesPerSecond;
                     // The character as the component sees it: the same bones, joint map and renames.
                     CharacterRig rig = RigCollector.Collect(animator, settings, contract.Skeleton, out JointMap jointMap, out Transform[] bones);
-                    bool humanoid = settings.Rig == CharacterRigKind.Humanoid;
+                    bool humanoid = settings.RigOf(animator) == CharacterRigKind.Humanoid;
 
                     CharacterPoseTrack track;
                     string name;

@@ -5,6 +5,7 @@ using DeltaInterpolator.Core.BvhImport;
 using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Editor.Humanoid;
+using UnityEditor;
 using UnityEngine;
 
 namespace DeltaInterpolator.Editor.Importers
@@ -103,29 +104,41 @@ namespace DeltaInterpolator.Editor.Importers
         /// that Unity's humanoid reads (sampled through <see cref="HumanPoseHandler"/> on the figure), so the clip
         /// plays on this figure and on any humanoid character.
         /// </summary>
-        public static AnimationClip Clip(BvhImportResult import, GameObject root, Transform[] joints, Avatar avatar, bool humanoid)
+        public static AnimationClip Clip(BvhImportResult import, GameObject root, Transform[] joints, Avatar avatar, bool humanoid, BvhClipRange range)
         {
-            var clip = new AnimationClip { name = import.Name, frameRate = (float)import.FrameRate };
-            foreach (ClipCurve c in import.Curves) clip.SetCurve(c.Path, typeof(Transform), c.Property, ToUnity(c));
+            var clip = new AnimationClip { name = range.Name, frameRate = (float)import.FrameRate };
+            int[] frames = range.ClipFrames();
+            IReadOnlyList<ClipCurve> curves = !range.PingPong && range.FirstFrame == 0 && range.LastFrame == import.FrameCount - 1 ? import.Curves : range.Curves(import);
+            foreach (ClipCurve c in curves) clip.SetCurve(c.Path, typeof(Transform), c.Property, ToUnity(c));
             if (humanoid)
             {
-                foreach (ClipCurve c in SampleHumanoidCurves(import, root, joints, avatar)) clip.SetCurve(c.Path, typeof(Animator), c.Property, ToUnity(c));
+                foreach (ClipCurve c in SampleHumanoidCurves(import, root, joints, avatar, frames)) clip.SetCurve(c.Path, typeof(Animator), c.Property, ToUnity(c));
+            }
+
+            if (range.Loop)
+            {
+                // Loop Time wraps the last frame to the first; Loop Pose spreads what is left of the seam over the clip.
+                AnimationClipSettings settings = AnimationUtility.GetAnimationClipSettings(clip);
+                settings.loopTime = true;
+                settings.loopBlend = true;
+                AnimationUtility.SetAnimationClipSettings(clip, settings);
             }
 
             return clip;
         }
 
-        private static IReadOnlyList<ClipCurve> SampleHumanoidCurves(BvhImportResult import, GameObject root, Transform[] joints, Avatar avatar)
+        private static IReadOnlyList<ClipCurve> SampleHumanoidCurves(BvhImportResult import, GameObject root, Transform[] joints, Avatar avatar, int[] clipFrames)
         {
-            int frames = import.FrameCount;
+            int frames = clipFrames.Length;
             int n = joints.Length;
             var recording = new HumanPoseRecording(frames);
             var pose = new HumanPose();
             var handler = new HumanPoseHandler(avatar, root.transform);
             try
             {
-                for (int f = 0; f < frames; f++)
+                for (int k = 0; k < frames; k++)
                 {
+                    int f = clipFrames[k];
                     for (int j = 0; j < n; j++)
                     {
                         int r = (f * n + j) * 4;
@@ -135,7 +148,7 @@ namespace DeltaInterpolator.Editor.Importers
                     }
 
                     handler.GetHumanPose(ref pose);
-                    recording.Record(f, pose);
+                    recording.Record(k, pose);
                 }
             }
             finally

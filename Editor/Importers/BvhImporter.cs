@@ -1,5 +1,6 @@
 #nullable enable
 using System;
+using System.Collections.Generic;
 using System.IO;
 using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.BvhImport;
@@ -15,13 +16,14 @@ namespace DeltaInterpolator.Editor.Importers
     /// Animator), an <c>AnimationClip</c> at the file's frame rate in Unity's space and metres, and an avatar —
     /// humanoid, built from the file's T-pose, when the joint names follow a known convention (CMU/MotionBuilder,
     /// LaFAN1, Mixamo, Unity, Poser), else generic. Drag the prefab into a scene and the clip onto it to play.
+    /// <see cref="clips"/> cuts named clips from the file instead (frame ranges, each looping or not).
     /// </summary>
     /// <remarks>
     /// All conversion is Core's (<see cref="BvhClipImport"/>, tested without Unity); this class only builds
     /// the objects and reports a file that cannot be read as an import error naming the file and line.
     /// </remarks>
-    // Version 2: Z-up files are stood on Y (Up Axis), so files imported before are imported again.
-    [ScriptedImporter(2, "bvh")]
+    // Version 3: clip ranges with loops (Clips); version 2: Z-up files are stood on Y (Up Axis). A new version imports every file again.
+    [ScriptedImporter(3, "bvh")]
     public sealed class BvhImporter : ScriptedImporter
     {
         /// <summary>Metres per unit of the file; 0 tells the unit from the skeleton's size (centimetres, metres, inches, CMU units, …).</summary>
@@ -32,13 +34,20 @@ namespace DeltaInterpolator.Editor.Importers
         [Tooltip("Which axis is up in the file. Auto: decided from the rest pose (feet to head) and the motion's floor; Z: a Z-up file (Blender, 3ds Max) is turned onto Y up; Y: taken as it is. The import log says what was decided when the file was turned.")]
         public UpAxis upAxis = UpAxis.Auto;
 
+        /// <summary>Clips cut from the file, one per range (name, first and last frame, loop); empty: one clip of the whole file.</summary>
+        [Tooltip("Clips to cut from the file, one per range: a name, the first and last frame (inclusive) and whether it loops. Empty: one clip of the whole file.")]
+        public BvhClipSettings[] clips = new BvhClipSettings[0];
+
         /// <inheritdoc />
         public override void OnImportAsset(AssetImportContext ctx)
         {
             BvhImportResult import;
+            var ranges = new List<BvhClipRange>();
             try
             {
                 import = BvhClipImport.ImportFile(ctx.assetPath, metresPerUnit, upAxis);
+                foreach (BvhClipSettings c in clips ?? new BvhClipSettings[0]) if (c != null) ranges.Add(c.ToRange());
+                BvhClipRange.Check(ranges, import);
             }
             catch (Exception e) when (e is DataFormatException || e is InputPathException || e is IOException || e is UnauthorizedAccessException)
             {
@@ -57,10 +66,17 @@ namespace DeltaInterpolator.Editor.Importers
             Avatar avatar = human is null ? AvatarBuilder.BuildGenericAvatar(figure, "") : human;
             avatar.name = import.Name + "Avatar";
             figure.AddComponent<Animator>().avatar = avatar;
-            AnimationClip clip = BvhFigure.Clip(import, figure, joints, avatar, humanoid);
-
             ctx.AddObjectToAsset(BvhSubAssets.FigureId, figure);
-            ctx.AddObjectToAsset(BvhSubAssets.ClipId, clip);
+            if (ranges.Count == 0)
+            {
+                ctx.AddObjectToAsset(BvhSubAssets.ClipId, BvhFigure.Clip(import, figure, joints, avatar, humanoid, new BvhClipRange(import.Name, 0, import.FrameCount - 1, false)));
+            }
+            else
+            {
+                // One clip per range; each sub-asset's identifier follows its name, so references survive edits of the other ranges.
+                foreach (BvhClipRange range in ranges) ctx.AddObjectToAsset(range.SubAssetId, BvhFigure.Clip(import, figure, joints, avatar, humanoid, range));
+            }
+
             ctx.AddObjectToAsset(BvhSubAssets.AvatarId, avatar);
             ctx.SetMainObject(figure);
         }

@@ -4,6 +4,7 @@ using System;
 using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
 using Unity.InferenceEngine;
+using Unity.Jobs;
 using Unity.Profiling;
 
 namespace DeltaInterpolator.Sentis
@@ -278,6 +279,10 @@ namespace DeltaInterpolator.Sentis
                     copy.ReadbackRequest();
                 }
 
+                // Sentis CPU schedules Burst jobs (the run, then the copies) into the job system's batch, which starts them only
+                // when flushed: flush now so they start at once on the worker threads, rather than at the next poll of their fence
+                // (JobHandle.IsCompleted flushes too, unity:Runtime/Jobs/ScriptBindings/JobHandle.bindings.cs), a frame later in a game.
+                if (_owner.BackendType == BackendType.CPU) JobHandle.ScheduleBatchedJobs();
                 _scheduled = true;
             }
 

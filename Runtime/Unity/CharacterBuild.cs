@@ -14,11 +14,13 @@ namespace DeltaInterpolator.Unity
     /// </summary>
     internal sealed class CharacterBuild : IDisposable
     {
-        private CharacterBuild(TransitionScheduler scheduler, TransitionCharacter character, TransitionLayerBinder binder, Transform[] bones, PlaybackSettings playback, SettingsSnapshot built)
+        private CharacterBuild(TransitionScheduler scheduler, TransitionCharacter character, TransitionLayerBinder binder, AnimatorTransitionWatcher watcher, CharacterRequests requests, Transform[] bones, PlaybackSettings playback, SettingsSnapshot built)
         {
             Scheduler = scheduler;
             Character = character;
             Binder = binder;
+            Watcher = watcher;
+            Requests = requests;
             Bones = bones;
             Playback = playback;
             Built = built;
@@ -30,6 +32,12 @@ namespace DeltaInterpolator.Unity
 
         public TransitionLayerBinder Binder { get; }
 
+        /// <summary>Neural Animator transitions: the watched layers' state machines read for Core each frame.</summary>
+        public AnimatorTransitionWatcher Watcher { get; }
+
+        /// <summary>The requests game code makes (clip, pose, hand-off into a state).</summary>
+        public CharacterRequests Requests { get; }
+
         /// <summary>The bones driven, the root bone first.</summary>
         public Transform[] Bones { get; }
 
@@ -40,12 +48,11 @@ namespace DeltaInterpolator.Unity
         public SettingsSnapshot Built { get; }
 
         /// <summary>Builds from <paramref name="s"/>; refuses (with what to do) a missing model or engine and a rig that cannot be mapped.</summary>
-        public static CharacterBuild Create(Animator animator, InbetweenerSettings s, string graphName, ushort sortingOrder)
+        public static CharacterBuild Create(Animator animator, InbetweenerSettings s, MotionInbetweener component, string graphName, ushort sortingOrder)
         {
-            InbetweeningModel model = s.Model != null ? s.Model : throw new InvalidOperationException($"the settings {s.name} have no model; assign an imported in-betweening model");
-            IInferenceBackendFactory factory = InferenceBackends.Find(s.Backend)
-                ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
+            IInferenceBackendFactory factory = Engine(s, out InbetweeningModel model);
             TransitionScheduler scheduler = SharedSchedulers.Acquire(model, factory);
+            TransitionLayerBinder? binder = null;
             try
             {
                 ModelContract contract = scheduler.Contract;
@@ -54,14 +61,29 @@ namespace DeltaInterpolator.Unity
                 var playback = new PlaybackSettings { BlendInSeconds = s.BlendInSeconds, BlendOutSeconds = s.BlendOutSeconds, PastFrames = s.PastFrames, LockFeet = s.LockFeet };
                 var character = new TransitionCharacter(converter, scheduler, playback, rig.Armature, model.name, factory.Name);
                 // The bones' pose now is the first frame shown, so a request may follow at once (e.g. right after AddComponent).
-                var binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder);
-                return new CharacterBuild(scheduler, character, binder, bones, playback, SettingsSnapshot.Take(s));
+                var watcher = new AnimatorTransitionWatcher(animator, s.NeuralTransitions, character.Transitions, bones, component);
+                binder = new TransitionLayerBinder(animator, bones, graphName, sortingOrder, watcher);
+                // Neural transitions read states at their first transition: the controller copy is made now, not in that frame.
+                if (watcher.Watching) binder.States.Warm();
+                var requests = new CharacterRequests(character, binder, animator, s, component, bones.Length);
+                return new CharacterBuild(scheduler, character, binder, watcher, requests, bones, playback, SettingsSnapshot.Take(s));
             }
             catch
             {
+                // Whatever failed (the component stops once, PlaybackStatus.TryStart), nothing built so far is left behind: the
+                // binder's graph and native buffers, and this character's hold on the model.
+                binder?.Dispose();
                 SharedSchedulers.Release(scheduler);
                 throw;
             }
+        }
+
+        /// <summary>The settings' model and engine; refuses (with what to do) a missing model or an engine that is not installed.</summary>
+        public static IInferenceBackendFactory Engine(InbetweenerSettings s, out InbetweeningModel model)
+        {
+            model = s.Model != null ? s.Model : throw new InvalidOperationException($"the settings {s.name} have no model; assign an imported in-betweening model");
+            return InferenceBackends.Find(s.Backend)
+                ?? throw new InvalidOperationException($"the inference engine '{s.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {s.name}");
         }
 
         public void Dispose()

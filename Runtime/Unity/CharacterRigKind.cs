@@ -14,5 +14,11 @@ namespace DeltaInterpolator.Unity
         /// reference pose the avatar's own T-pose (<c>avatar.humanDescription.skeleton</c>).
         /// </summary>
         Humanoid = 1,
+
+        /// <summary>
+        /// <see cref="Humanoid"/> when the Animator has a humanoid avatar (most Unity characters), <see cref="Generic"/>
+        /// otherwise; decided when the component starts. The default of new settings.
+        /// </summary>
+        Automatic = 2,
     }
 }

@@ -14,6 +14,9 @@ namespace DeltaInterpolator.Unity
     /// </summary>
     internal struct ClipTargetReadJob : IAnimationJob
     {
+        // Shared with the TransitionLayerJob of the same graph: neither writes the handles, and saying so lets the job
+        // system's safety checks schedule both over one array.
+        [ReadOnly]
         public NativeArray<TransformStreamHandle> Bones;
         public NativeArray<double> Target;
 

@@ -8,12 +8,15 @@ using UnityEngine;
 
 namespace DeltaInterpolator.Unity
 {
-    /// <summary>Neural transitions for a character: call <see cref="RequestTransition(AnimationClip, float, float)"/>(or with a pose) and the character moves from the
-    /// pose it shows now to the target through frames that the in-betweening model fills, arriving on the first rendered frame at or after the requested time; then its
-    /// own animation takes back over. Plays as an animation job layered after the Animator Controller, so it composes with whatever the controller does.</summary>
+    /// <summary>Neural transitions for a character. Hand over to an Animator state with <see cref="RequestTransition(string, int, float, float)"/>: the character moves
+    /// from the pose it shows now to the state's pose through frames the in-betweening model fills, and on arrival the controller is put in that state and plays on.
+    /// Or, with no code, let the settings' <see cref="InbetweenerSettings.NeuralTransitions"/> replace the controller's own crossfades by in-betweens. A clip or pose
+    /// request (<see cref="RequestTransition(AnimationClip, float, float)"/>) visits its pose, then the controller's own animation takes back over. Plays as an
+    /// animation job layered after the Animator Controller, so it composes with whatever the controller does.</summary>
     /// <remarks>
-    /// Thin glue over Core's <see cref="TransitionCharacter"/>: each frame <c>Update</c> gathers what Unity read, makes
-    /// one call, and the binder writes its output into the job, which blends it over the controller's output.
+    /// Thin glue over Core's <see cref="TransitionCharacter"/>: each frame <c>Update</c> gathers what Unity read (the binder, and the
+    /// <see cref="AnimatorTransitionWatcher"/> for the controller's layers), makes one call, and the binder carries out its output: the
+    /// pose into the job, which blends it over the controller's output, a state to sample, a state to play. Requests from game code go through <see cref="CharacterRequests"/>.
     /// The network runs on a worker thread when the engine allows it, otherwise on the main thread, pumped once per
     /// frame before every script's <c>Update</c> (<see cref="SchedulerPump"/>).
     /// The settings choose the rig (<see cref="InbetweenerSettings.Rig"/>): a humanoid avatar's bones and
@@ -41,10 +44,7 @@ namespace DeltaInterpolator.Unity
         private TransitionCharacter? _character;
         private TransitionLayerBinder? _binder;
         private Transform[] _bones = new Transform[0];
-        private double[] _targetRoot = new double[3];
-        private double[] _targetRotations = new double[0];
         private readonly PlaybackStatus _status = new PlaybackStatus();
-        private readonly TrainedRangeWarnings _warnings = new TrainedRangeWarnings();
         private InbetweenerSettings? _listening;
         private bool _isEnabled;
         private bool _settingsChanged;
@@ -86,49 +86,49 @@ namespace DeltaInterpolator.Unity
         public double ModelFrameRate => _character?.Player.FrameRate ?? double.NaN;
 
         /// <summary>Transition to the pose <paramref name="clip"/>shows at <paramref name="clipTime"/>, arriving in <paramref name="seconds"/>(≤ 0: the settings'
-        /// default). The pose is read from the clip through the component's playable graph in this frame's animation evaluation (the scene is never written to); the
-        /// transition starts once it is read and still arrives <paramref name="seconds"/>after this call.</summary>
+        /// default); then the controller's own animation takes back over (blend-out): to end in a state and play on, hand off with
+        /// <see cref="RequestTransition(string, int, float, float)"/>. The pose is read from the clip through the component's playable graph in this frame's
+        /// animation evaluation (the scene is never written to); the transition starts once it is read and still arrives <paramref name="seconds"/>after this call.</summary>
         /// <returns>The request's id, as <see cref="TransitionCompleted"/> reports it.</returns>
-        /// <exception cref="InvalidOperationException">The component is not running (disabled, or its model failed to load) or no frame was shown yet.</exception>
-        public int RequestTransition(AnimationClip clip, float clipTime, float seconds = 0)
-        {
-            if (clip == null) throw new ArgumentNullException(nameof(clip));
-            TransitionCharacter character = Running();
-            using (s_Request.Auto())
-            {
-                Showed(character);
-                float length = seconds > 0 ? seconds : settings!.DefaultTransitionSeconds;
-                _warnings.Warn(character.Player, length, this);
-                int id = character.DeferTransition(length);
-                _binder!.Sampler.Sample(clip, clipTime);
-                return id;
-            }
-        }
+        /// <exception cref="ArgumentNullException"><paramref name="clip"/> is null.</exception>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="clipTime"/> negative or not finite; <paramref name="seconds"/> NaN or longer than the model spans.</exception>
+        /// <exception cref="InvalidOperationException">The component is not running (disabled, or its model failed to load).</exception>
+        public int RequestTransition(AnimationClip clip, float clipTime, float seconds = 0) => CharacterRequests.RequestClip(this, clip, clipTime, seconds);
 
         /// <summary><see cref="RequestTransition(AnimationClip, float, float)"/>with the length in model frames (the model's rate, <see cref="ModelFrameRate"/>). Named
         /// apart from it on purpose: as an overload, <c>RequestTransition(clip, 0.2f, 1)</c>meant one frame (33 ms), not one second.</summary>
         /// <exception cref="ArgumentOutOfRangeException"><paramref name="modelFrames"/> below 1.</exception>
-        public int RequestTransitionInFrames(AnimationClip clip, float clipTime, int modelFrames)
-        {
-            if (modelFrames < 1) throw new ArgumentOutOfRangeException(nameof(modelFrames), modelFrames, "expected at least one model frame");
-            TransitionCharacter character = Running();
-            return RequestTransition(clip, clipTime, (float)(modelFrames / character.Player.FrameRate));
-        }
+        public int RequestTransitionInFrames(AnimationClip clip, float clipTime, int modelFrames) => CharacterRequests.RequestClipInFrames(this, clip, clipTime, modelFrames);
 
         /// <summary>Transition to a pose: the root bone's local position and every bone's local rotation, in the order of <see cref="Bones"/>, arriving in <paramref
-        /// name="seconds"/>(≤ 0: the settings' default). The root bone's position is relative to where the character stands now (with root motion on, a position 2 m
-        /// ahead sends the character 2 m ahead).</summary>
-        /// <exception cref="ArgumentException"><paramref name="localRotations"/> does not hold one rotation per bone.</exception>
-        public int RequestTransition(Vector3 rootPosition, Quaternion[] localRotations, float seconds = 0)
-        {
-            TransitionCharacter character = Running();
-            if (localRotations == null || localRotations.Length != _bones.Length) throw new ArgumentException($"expected {_bones.Length} rotations, one per bone of Bones", nameof(localRotations));
-            _targetRoot[0] = rootPosition.x;
-            _targetRoot[1] = rootPosition.y;
-            _targetRoot[2] = rootPosition.z;
-            for (int b = 0; b < localRotations.Length; b++) UnityPoses.Write(localRotations[b], _targetRotations, 4 * b);
-            return Request(character, seconds);
-        }
+        /// name="seconds"/>(≤ 0: the settings' default); then the controller takes back over (blend-out). The root bone's position is relative to where the character
+        /// stands now (with root motion on, a position 2 m ahead sends the character 2 m ahead).</summary>
+        /// <exception cref="ArgumentException"><paramref name="localRotations"/> is null or does not hold one rotation per bone; <paramref name="seconds"/> NaN.</exception>
+        public int RequestTransition(Vector3 rootPosition, Quaternion[] localRotations, float seconds = 0) => CharacterRequests.RequestPose(this, rootPosition, localRotations, seconds);
+
+        /// <summary>Hand over to an Animator state: transition to the pose state <paramref name="stateName"/>(its name, or full path such as
+        /// <c>"Base Layer.Roll"</c>) of <paramref name="layer"/>shows <paramref name="timeInState"/>seconds in, arriving in <paramref name="seconds"/>(≤ 0: the
+        /// settings' default); in the frame it arrives the controller is put in that state at that time (<c>Animator.PlayInFixedTime</c>) and the layer lets go,
+        /// so the state plays on with no blend back. The target is read off-scene from a copy of the controller with the character's parameters now (a 1D/2D
+        /// blend tree blends as it would on the character).</summary>
+        /// <exception cref="ArgumentNullException"><paramref name="stateName"/> is null.</exception>
+        /// <exception cref="ArgumentException">The controller has no such state on <paramref name="layer"/>.</exception>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="layer"/> is not a layer of the controller, <paramref name="timeInState"/> negative or not
+        /// finite, <paramref name="seconds"/> NaN or longer than the model spans.</exception>
+        /// <exception cref="InvalidOperationException">The component is not running, or the Animator has no controller.</exception>
+        public int RequestTransition(string stateName, int layer, float timeInState, float seconds = 0) =>
+            CharacterRequests.RequestState(this, StateHash(stateName), nameof(stateName), layer, timeInState, seconds);
+
+        /// <summary><see cref="RequestTransition(string, int, float, float)"/>with the state's hash (<c>Animator.StringToHash</c> of its name or full path).</summary>
+        public int RequestTransition(int stateHash, int layer, float timeInState, float seconds = 0) => CharacterRequests.RequestState(this, stateHash, nameof(stateHash), layer, timeInState, seconds);
+
+        /// <summary><see cref="RequestTransition(string, int, float, float)"/>with the length in model frames (<see cref="ModelFrameRate"/>).</summary>
+        public int RequestTransitionInFrames(string stateName, int layer, float timeInState, int modelFrames) =>
+            CharacterRequests.RequestStateInFrames(this, StateHash(stateName), nameof(stateName), layer, timeInState, modelFrames);
+
+        /// <summary><see cref="RequestTransition(int, int, float, float)"/>with the length in model frames (<see cref="ModelFrameRate"/>).</summary>
+        public int RequestTransitionInFrames(int stateHash, int layer, float timeInState, int modelFrames) =>
+            CharacterRequests.RequestStateInFrames(this, stateHash, nameof(stateHash), layer, timeInState, modelFrames);
 
         /// <summary>Ends the current transition at once (the controller's pose shows from the next frame).</summary>
         public void Cancel() => _character?.Cancel();
@@ -175,15 +175,8 @@ namespace DeltaInterpolator.Unity
                 return;
             }
 
-            try
-            {
-                Build();
-                _status.Run();
-            }
-            catch (Exception e) when (e is DataFormatException || e is ArgumentException || e is InvalidOperationException || e is JointMapException)
-            {
-                Stop(e.Message, e);
-            }
+            // Any exception of the load (Sentis asserts, `new Worker`, a backend factory's own type) stops the component once: no reload every frame.
+            if (!_status.TryStart(Build, settings.Model != null ? settings.Model.name : settings.name)) Stop(_status.Reason, _status.Error);
         }
 
         // Applies edited settings: blend times at once; a change of what the build used re-initialises.
@@ -212,32 +205,35 @@ namespace DeltaInterpolator.Unity
         }
 
         // Profiler markers (Window → Analysis → Profiler, CPU timeline) around the component's frame (recording the pose
-        // shown last frame, advancing the transition, planning root motion: one Core call) and its requests. The
+        // shown last frame, advancing the transition, planning root motion: one Core call); requests are marked by CharacterRequests. The
         // schedulers' stages are marked where they pump (SchedulerPump); inference by each backend (e.g. DeltaInterpolator.Sentis.Run).
         private static readonly ProfilerMarker s_Frame = new ProfilerMarker("MotionInbetweener.Frame");
-        private static readonly ProfilerMarker s_Request = new ProfilerMarker("MotionInbetweener.RequestTransition");
 
         // The transition advances where the Animator does: rendered frames (Normal, UnscaledTime) or physics
         // steps (Fixed), by the step of its clock (Core's AnimationClock decides; only Unity's values are read here).
         private void Update()
         {
             if (_settingsChanged) ApplySettingsChange();
-            if (_status.State == PlaybackState.Waiting && settings != null) Rebuild();
+            if (_status.ShouldStart(settings != null)) Rebuild();
             SchedulerPump.CheckPumpedThisFrame(this);
             Tick(FrameCallback.Update);
         }
 
         private void FixedUpdate() => Tick(FrameCallback.FixedUpdate);
 
-        // Gather what Unity read, one call into Core's character, write its output into the job.
+        // Gather what Unity read, one call into Core's character, the binder carries out its output (pose, state to sample, state to play).
         private void Tick(FrameCallback callback)
         {
             if (_character == null || _binder == null || _animator == null) return;
-            CharacterFrameInput input = _binder.Gather(callback, _animator);
+            CharacterFrameInput input = _binder.Gather(callback);
             CharacterFrameOutput frame;
-            using (s_Frame.Auto()) frame = _character.Frame(input, _binder.Shown, _binder.Sampler.Read());
-            if (frame.Played) _binder.Write(frame);
-            if (!frame.Failed) return;
+            using (s_Frame.Auto()) frame = _character.Frame(input, _binder.Shown, _binder.Sampled);
+            if (!_binder.Apply(frame)) Failed(frame);
+        }
+
+        // The inference engine failed in this frame (once: the component stops).
+        private void Failed(in CharacterFrameOutput frame)
+        {
             // The shared model is broken: the next character to enable loads it afresh.
             if (_build != null) SharedSchedulers.Discard(_build.Scheduler);
             Stop(frame.FailureReason!, frame.Error);
@@ -247,11 +243,10 @@ namespace DeltaInterpolator.Unity
         {
             InbetweenerSettings s = settings != null ? settings : throw new InvalidOperationException("no settings asset is assigned; create one (Assets > Create > Δ-Interpolator > In-betweener Settings) and assign it");
             _animator = GetComponent<Animator>();
-            _build = CharacterBuild.Create(_animator, s, name + " (Δ-Interpolator)", LayerSortingOrder);
+            _build = CharacterBuild.Create(_animator, s, this, name + " (Δ-Interpolator)", LayerSortingOrder);
             _character = _build.Character;
             _binder = _build.Binder;
             _bones = _build.Bones;
-            _targetRotations = new double[4 * _bones.Length];
             _character.Player.TransitionCompleted += OnCompleted;
         }
 
@@ -264,34 +259,20 @@ namespace DeltaInterpolator.Unity
             _binder = null;
         }
 
-        private int Request(TransitionCharacter character, float seconds)
-        {
-            using (s_Request.Auto())
-            {
-                // The pose shown last frame must be in the history before the request reads it, and the target
-                // goes into the same root-motion space, from where the character stands now.
-                Showed(character);
-                float length = seconds > 0 ? seconds : settings!.DefaultTransitionSeconds;
-                _warnings.Warn(character.Player, length, this);
-                return character.RequestTransition(_targetRoot, _targetRotations, length);
-            }
-        }
-
-        // Where the character stands now and the pose the job showed last, before a request made between frames.
-        private void Showed(TransitionCharacter character) => character.Showed(UnityPoses.Place(transform), _animator!.applyRootMotion, _binder!.Shown);
-
-        private TransitionCharacter Running()
+        /// <summary>The running component's requests; initialises first when settings arrived since the last frame.</summary>
+        /// <exception cref="InvalidOperationException">The component is not running (disabled, or its model failed to load).</exception>
+        internal CharacterRequests Running()
         {
             // Settings assigned through serialization or edited this frame: initialise now rather than at the next Update.
             if (_isEnabled && _settingsChanged) ApplySettingsChange();
-            if (_isEnabled && _status.State == PlaybackState.Waiting && settings != null) Rebuild();
-            if (_character == null)
-            {
-                throw new InvalidOperationException($"{name}: the Motion Inbetweener is not running: {_status.Reason}");
-            }
-
-            return _character;
+            if (_isEnabled && _status.ShouldStart(settings != null)) Rebuild();
+            return _build?.Requests ?? throw new InvalidOperationException($"{name}: the Motion Inbetweener is not running: {_status.Reason}");
         }
+
+        private static int StateHash(string stateName) => Animator.StringToHash(stateName ?? throw new ArgumentNullException(nameof(stateName)));
+
+        /// <summary>A <see cref="NeuralTransition"/> behaviour's choice for a state, recorded when the Animator enters the state.</summary>
+        internal void MarkState(int stateHash, int layer, NeuralTransitionMode mode) => _build?.Watcher.MarkState(stateHash, layer, mode);
 
         private void OnCompleted(TransitionCompletion completion) => TransitionCompleted?.Invoke(completion);
     }

@@ -15,7 +15,8 @@ namespace DeltaInterpolator.Unity
         /// <summary>The pose the bones hold when the component starts (the bind pose of a freshly instantiated character).</summary>
         BindPose = 1,
 
-        /// <summary>The pose a clip shows at a time (<see cref="InbetweenerSettings.ReferenceClip"/>, <see cref="InbetweenerSettings.ReferenceClipTime"/>), e.g. a T-pose frame.</summary>
+        /// <summary>The pose a clip shows at a time (<see cref="InbetweenerSettings.ReferenceClip"/>, <see cref="InbetweenerSettings.ReferenceClipTime"/>), e.g. a T-pose frame;
+        /// sampled off the scene, onto a hidden copy of the character's transforms: the character's own bones never move for it.</summary>
         ClipFrame = 2,
     }
 }

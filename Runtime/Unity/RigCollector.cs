@@ -28,7 +28,8 @@ namespace DeltaInterpolator.Unity
             Walk(animator.transform, -1, all, names, parents);
             string?[] roles;
             int root;
-            if (settings.Rig == CharacterRigKind.Humanoid)
+            CharacterRigKind kind = settings.RigOf(animator);
+            if (kind == CharacterRigKind.Humanoid)
             {
                 if (!animator.isHuman)
                 {
@@ -73,7 +74,7 @@ namespace DeltaInterpolator.Unity
 
             var positions = new double[3 * n];
             var rotations = new double[4 * n];
-            if (settings.Rig == CharacterRigKind.Humanoid)
+            if (kind == CharacterRigKind.Humanoid)
             {
                 AvatarTPose(animator, bones, positions, rotations, character);
             }
@@ -88,7 +89,7 @@ namespace DeltaInterpolator.Unity
             }
 
             var rig = new CharacterRig(character, selection.BoneNames, selection.Parents, positions, rotations, armatureFrame);
-            return settings.Rig == CharacterRigKind.Generic && settings.ReferencePose == ReferencePoseSource.ModelAxes ? rig.WithModelTPoseByAxes() : rig;
+            return kind == CharacterRigKind.Generic && settings.ReferencePose == ReferencePoseSource.ModelAxes ? rig.WithModelTPoseByAxes() : rig;
         }
 
         /// <summary>Where <paramref name="t"/> stands in the world (its x scale stands for its uniform scale).</summary>
@@ -151,25 +152,42 @@ namespace DeltaInterpolator.Unity
             }
         }
 
-        // The reference pose a clip shows at a time: sampled onto the bones, read, and the bones put back in the
-        // same call. Only at start (the rig must exist before the first frame, and the component's playable graph,
-        // which samples run-time targets, is built from it), so nothing else can observe the bones meanwhile.
+        // The reference pose a clip shows at a time, read off the scene: sampled onto a hidden, renderer-free copy of the
+        // character's hierarchy (transforms only, at the character's local poses, with its avatar), never onto the character,
+        // so nothing that watches its bones (physics, constraints, other scripts, the Editor's dirty state) sees them move.
         private static void ClipFramePose(Animator animator, AnimationClip clip, float time, Transform[] bones, double[] positions, double[] rotations)
         {
-            var savedPositions = new Vector3[bones.Length];
-            var savedRotations = new Quaternion[bones.Length];
-            for (int b = 0; b < bones.Length; b++)
+            var copy = new GameObject(animator.name + " (Δ-Interpolator reference pose)") { hideFlags = HideFlags.HideAndDontSave };
+            try
             {
-                savedPositions[b] = bones[b].localPosition;
-                savedRotations[b] = bones[b].localRotation;
+                var copies = new Dictionary<Transform, Transform>();
+                CopyHierarchy(animator.transform, copy.transform, copies);
+                copy.AddComponent<Animator>().avatar = animator.avatar;
+                clip.SampleAnimation(copy, time);
+                for (int b = 0; b < bones.Length; b++)
+                {
+                    Transform t = copies[bones[b]];
+                    Write(t.localPosition, t.localRotation, positions, rotations, b);
+                }
             }
-
-            clip.SampleAnimation(animator.gameObject, time);
-            for (int b = 0; b < bones.Length; b++) Write(bones[b].localPosition, bones[b].localRotation, positions, rotations, b);
-            for (int b = 0; b < bones.Length; b++)
+            finally
             {
-                bones[b].localPosition = savedPositions[b];
-                bones[b].localRotation = savedRotations[b];
+                UnityEngine.Object.DestroyImmediate(copy);
+            }
+        }
+
+        private static void CopyHierarchy(Transform source, Transform copy, Dictionary<Transform, Transform> copies)
+        {
+            for (int c = 0; c < source.childCount; c++)
+            {
+                Transform child = source.GetChild(c);
+                Transform childCopy = new GameObject(child.name) { hideFlags = HideFlags.HideAndDontSave }.transform;
+                childCopy.parent = copy;
+                childCopy.localPosition = child.localPosition;
+                childCopy.localRotation = child.localRotation;
+                childCopy.localScale = child.localScale;
+                copies.Add(child, childCopy);
+                CopyHierarchy(child, childCopy, copies);
             }
         }
 

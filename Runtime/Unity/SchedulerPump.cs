@@ -47,6 +47,9 @@ namespace DeltaInterpolator.Unity
             Debug.LogWarning($"{character.name}: the Δ-Interpolator scheduler pump ([DefaultExecutionOrder(-1000)]) had not run yet this frame when this character's Update did; a script ordered before it drives the character, whose transitions then start one frame late", character);
         }
 
+        // Play ends (or the application quits): the preloads let their models go, as the characters do in their OnDisable.
+        private void OnDestroy() => ModelPreloads.ReleaseAll();
+
         private void Update()
         {
             s_pumpedFrame = Time.frameCount;

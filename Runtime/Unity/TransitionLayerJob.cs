@@ -10,13 +10,15 @@ namespace DeltaInterpolator.Unity
     /// <summary>
     /// The animation job layered after the user's Animator Controller: it blends the transition's pose
     /// (computed on the main thread by Core's <see cref="TransitionPlayer.BeginFrame"/> and
-    /// <see cref="RootMotion.Plan"/>) over the controller's output with <see cref="PoseBlend.Apply"/>, keeps
+    /// <see cref="RootMotion.Plan"/>) over the controller's output with <see cref="PoseBlend.ApplyMasked"/> (bones a masked layer above drives keep the controller's pose), keeps
     /// the pose shown for the history, and blends the transition's root velocity over the controller's
     /// root motion (<see cref="RootMotion.BlendVelocity"/>).
     /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
     internal struct TransitionLayerJob : IAnimationJob
     {
+        // Shared with the ClipTargetReadJob of the same graph; the handles are only read (the stream is written through them).
+        [ReadOnly]
         public NativeArray<TransformStreamHandle> Bones;
         public NativeArray<double> Pose;
         public NativeArray<double> Shown;
@@ -24,6 +26,9 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>[0..2] the transition's root velocity (in), [3..5] the controller's (out), both per second in the stream's frame; [6] 1 with root motion on.</summary>
         public NativeArray<double> RootVelocity;
+
+        /// <summary>One flag per bone: true where a masked controller layer above drives the bone, which keeps the controller's pose; empty: no mask.</summary>
+        public NativeArray<bool> KeptBones;
 
         public int RootBone;
 
@@ -53,7 +58,7 @@ namespace DeltaInterpolator.Unity
             var pose = new AnimatorPoseStream(stream, Bones, RootBone);
             ReadOnlySpan<double> p = Pose.AsReadOnlySpan();
             Span<double> s = Shown.AsSpan();
-            PoseBlend.Apply(ref pose, Weight[0], p.Slice(0, 3), p.Slice(3), s.Slice(0, 3), s.Slice(3));
+            PoseBlend.ApplyMasked(ref pose, Weight[0], p.Slice(0, 3), p.Slice(3), KeptBones.AsReadOnlySpan(), s.Slice(0, 3), s.Slice(3));
         }
     }
 }

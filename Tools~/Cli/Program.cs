@@ -57,7 +57,7 @@ namespace DeltaInterpolator.Cli
                 "Reads BVH motion capture, runs the official LaFAN1 in-betweening benchmark and (later) neural models.\n\n" +
                 "Examples:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
-                "  inbetween check Runtime/Models/DeltaInterpolator-LaFAN1.onnx --past 10 --gap 60\n" +
+                "  inbetween check Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx --past 10 --gap 60\n" +
                 "  inbetween info ../shared/data/lafan1/walk4_subject1.bvh\n" +
                 "  inbetween bake ../shared/data/lafan1/obstacles1_subject5.bvh --every 15 --out out/obstacles1-every15.bvh --force\n" +
                 "  inbetween pack --out out/release\n\n" +

@@ -5,7 +5,8 @@ Each mutation copies the package's compiled inputs (.cs, .asmdef, csc.rsp, .json
 temporary folder, plants one mistake, compiles the affected assembly as unity_compile.py does (Core is
 reused from the normal run unless the mutation is planted in Core) and, for the rules Unity enforces only at run time,
 runs the rules tool; the mutation must fail with the error it names. Mistakes planted: a missing asmdef
-reference, an assembly that exists only under a versionDefines define used unguarded, a nullable
+reference, an assembly that exists only under a versionDefines define used unguarded (ONNX Runtime, Timeline), a
+Timeline type used outside the assembly that guards it, a nullable
 annotation without the csc.rsp that enables it, a misplaced attribute, editor API in runtime code (player),
 Unity members the stubs lack or with wrong types, a package API that does not exist, a managed field in an
 animation job, a main-thread call inside ProcessAnimation, an unserializable [SerializeField], a menu
@@ -71,6 +72,17 @@ MUTATIONS = [
      lambda r: (edit_json_list(os.path.join(r, 'Editor/DeltaInterpolator.Editor.asmdef'), 'references', add='DeltaInterpolator.OnnxRuntime'),
                 write(r, 'Editor/Mutation.cs', 'using DeltaInterpolator.OnnxRuntime;\nnamespace DeltaInterpolator.Editor.Mutation\n{\n'
                       '    internal static class UsesOnnxRuntime\n    {\n        public static System.Type Backend => typeof(OnnxRuntimeBackend);\n    }\n}\n')),
+     'csc', r'error CS0234'),
+    ('Timeline type used outside the guarded assembly (UnityEngine.Timeline in Runtime/Unity, Timeline installed)',
+     'editor+timeline', 'DeltaInterpolator.Unity',
+     lambda r: write(r, 'Runtime/Unity/Mutation.cs', 'namespace DeltaInterpolator.Unity.Mutation\n{\n    internal static class UsesTimeline\n    {\n'
+                     '        public static System.Type Track => typeof(UnityEngine.Timeline.TrackAsset);\n    }\n}\n'),
+     'csc', r'error CS0234'),
+    ('versionDefines-guarded Timeline assembly used unguarded (DeltaInterpolator.Timeline from Editor/, no Timeline package)',
+     'editor', 'DeltaInterpolator.Editor',
+     lambda r: (edit_json_list(os.path.join(r, 'Editor/DeltaInterpolator.Editor.asmdef'), 'references', add='DeltaInterpolator.Timeline'),
+                write(r, 'Editor/Mutation.cs', 'using DeltaInterpolator.Timeline;\nnamespace DeltaInterpolator.Editor.Mutation\n{\n'
+                      '    internal static class UsesTrack\n    {\n        public static System.Type Track => typeof(NeuralAnimationTrack);\n    }\n}\n')),
      'csc', r'error CS0234'),
     ('nullable annotation without csc.rsp (Runtime/Unity/csc.rsp removed)', 'editor', 'DeltaInterpolator.Unity',
      lambda r: os.remove(os.path.join(r, 'Runtime/Unity/csc.rsp')), 'csc', r'error CS8632'),

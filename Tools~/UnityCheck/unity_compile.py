@@ -20,12 +20,13 @@ package's own files and nothing written by hand per assembly:
     a player build does not, so editor API used in runtime code fails in the player configurations;
   * the samples (Samples~/NAME, copied into Assets/ when imported) compile into Assembly-CSharp, which
     references every auto-referenced runtime assembly;
-  * UnityEngine, UnityEditor, Unity.InferenceEngine and Unity.InferenceEngine.ONNX.Editor are separate
+  * UnityEngine, UnityEditor, Unity.InferenceEngine, Unity.InferenceEngine.ONNX.Editor and Unity.Timeline are separate
     stub assemblies (Stubs/ASSEMBLY/, checked against the real sources by check_stubs.py); the optional
     package com.github.asus4.onnxruntime is compiled from Tools~/node_modules when a configuration has it.
 
-Configurations: editor and player, each with and without com.github.asus4.onnxruntime (Sentis,
-com.unity.ai.inference 2.4.0, is a declared dependency: always present).
+Configurations: editor and player, each with and without com.github.asus4.onnxruntime, and each with
+com.unity.timeline 1.8.10 (Sentis, com.unity.ai.inference 2.4.0, is a declared dependency: always present;
+the Unity.Timeline stub assembly is referenced only where Timeline is installed).
 
 Usage: unity_compile.py [--root PACKAGE] [--config NAME ...] [--out DIR] [--rules] [-v]
 Exit status 1 when any compilation fails (errors and warnings are printed as the compiler wrote them).
@@ -47,6 +48,8 @@ UNITY_VERSION = '6000.0.40'
 # The packages each configuration has installed (name -> version), beside the package under check.
 SENTIS = ('com.unity.ai.inference', '2.4.0')
 ORT = ('com.github.asus4.onnxruntime', '0.4.9')
+# Timeline is optional as ONNX Runtime is: DeltaInterpolator.Timeline compiles only where a project installed it.
+TIMELINE = ('com.unity.timeline', '1.8.10')
 ORT_DIR = os.path.join(REPO, 'Tools~', 'node_modules', 'com.github.asus4.onnxruntime')
 
 
@@ -79,6 +82,8 @@ CONFIGS = {
     'editor': dict(editor=True, packages=dict([SENTIS])),
     'player+onnxruntime': dict(editor=False, packages=dict([SENTIS, ORT])),
     'player': dict(editor=False, packages=dict([SENTIS])),
+    'editor+timeline': dict(editor=True, packages=dict([SENTIS, TIMELINE])),
+    'player+timeline': dict(editor=False, packages=dict([SENTIS, TIMELINE])),
 }
 
 # Unity's default warning suppressions (EditorCompilation: PlayerSettings.suppressCommonWarnings).
@@ -92,7 +97,10 @@ STUB_ASSEMBLIES = [
     ('Unity.InferenceEngine.ONNX.Editor', ['UnityEngine', 'UnityEditor', 'Unity.InferenceEngine'], True),
     # com.unity.test-framework 1.4.6's runtime assembly ([UnityTest], UnityEngine.TestTools); it references NUnit
     ('UnityEngine.TestRunner', ['UnityEngine', 'nunit.framework'], False),
+    ('Unity.Timeline', ['UnityEngine'], False),
 ]
+# Stub assemblies of optional packages: present only in the configurations that install the package.
+STUB_PACKAGES = {'Unity.Timeline': TIMELINE[0]}
 
 
 def hidden(name):
@@ -380,7 +388,7 @@ def plan(root, config):
         if all(constraint_holds(c, set(a.defines)) for c in a.get('defineConstraints', [])):
             selected.append(a)
     present = {a.name for a in selected}
-    stub_present = {n for n, _, ed in STUB_ASSEMBLIES if editor or not ed}
+    stub_present = {n for n, _, ed in STUB_ASSEMBLIES if (editor or not ed) and STUB_PACKAGES.get(n, SENTIS[0]) in packages}
     known_elsewhere = {a.name for a in all_asm} | {n for n, _, _ in STUB_ASSEMBLIES} | {ORT[0]}
     for a in selected:
         names = []
@@ -396,6 +404,7 @@ def plan(root, config):
             names = [b.name for b in selected if b.get('autoReferenced', True) and not b.name.startswith('Assembly-CSharp')
                      and 'Editor' not in b.get('includePlatforms', [])]
             names += ['Unity.InferenceEngine']  # its asmdef is autoReferenced
+            names += [n for n in STUB_PACKAGES if n in stub_present]  # so is Timeline's, where installed
         a.refs = names
     # dependency order
     order, seen = [], set()

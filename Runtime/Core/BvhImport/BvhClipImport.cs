@@ -274,30 +274,46 @@ namespace DeltaInterpolator.Core.BvhImport
             return (positions, rotations);
         }
 
+        /// <summary>The transform curves of an import's <paramref name="frames"/>, in that order, one key per frame from time 0 (a <see cref="BvhClipRange"/>).</summary>
+        internal static IReadOnlyList<ClipCurve> Curves(BvhImportResult import, int[] frames)
+        {
+            var joints = new ImportedJoint[import.Joints.Count];
+            for (int j = 0; j < joints.Length; j++) joints[j] = import.Joints[j];
+            return Curves(joints, frames, import.FrameRate, import.LocalPositions, import.LocalRotations);
+        }
+
         private static IReadOnlyList<ClipCurve> Curves(ImportedJoint[] joints, int frameCount, double frameRate, float[] positions, float[] rotations)
         {
+            var frames = new int[frameCount];
+            for (int f = 0; f < frameCount; f++) frames[f] = f;
+            return Curves(joints, frames, frameRate, positions, rotations);
+        }
+
+        private static IReadOnlyList<ClipCurve> Curves(ImportedJoint[] joints, int[] frames, double frameRate, float[] positions, float[] rotations)
+        {
+            int frameCount = frames.Length;
             int jointCount = joints.Length;
             var times = new float[frameCount];
             for (int f = 0; f < frameCount; f++) times[f] = (float)(f / frameRate);
             var curves = new List<ClipCurve>();
             for (int j = 0; j < jointCount; j++)
             {
-                for (int c = 0; c < 4; c++) curves.Add(ClipCurve.Create(joints[j].Path, CurveBuilder.RotationProperties[c], (float[])times.Clone(), Column(rotations, jointCount, 4, j, c, frameCount)));
+                for (int c = 0; c < 4; c++) curves.Add(ClipCurve.Create(joints[j].Path, CurveBuilder.RotationProperties[c], (float[])times.Clone(), Column(rotations, jointCount, 4, j, c, frames)));
             }
 
             for (int j = 0; j < jointCount; j++)
             {
                 if (!joints[j].HasPositionCurves) continue;
-                for (int c = 0; c < 3; c++) curves.Add(ClipCurve.Create(joints[j].Path, CurveBuilder.PositionProperties[c], (float[])times.Clone(), Column(positions, jointCount, 3, j, c, frameCount)));
+                for (int c = 0; c < 3; c++) curves.Add(ClipCurve.Create(joints[j].Path, CurveBuilder.PositionProperties[c], (float[])times.Clone(), Column(positions, jointCount, 3, j, c, frames)));
             }
 
             return curves;
         }
 
-        private static float[] Column(float[] values, int jointCount, int width, int joint, int component, int frameCount)
+        private static float[] Column(float[] values, int jointCount, int width, int joint, int component, int[] frames)
         {
-            var column = new float[frameCount];
-            for (int f = 0; f < frameCount; f++) column[f] = values[(f * jointCount + joint) * width + component];
+            var column = new float[frames.Length];
+            for (int f = 0; f < frames.Length; f++) column[f] = values[(frames[f] * jointCount + joint) * width + component];
             return column;
         }
     }

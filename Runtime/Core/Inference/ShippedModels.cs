@@ -18,7 +18,7 @@ namespace DeltaInterpolator.Core.Inference
         public const string Default = "Runtime/Models/DeltaInterpolator-CMU.onnx";
 
         /// <summary>The LaFAN1 model (CC BY-NC-ND 4.0: non-commercial): the official LaFAN1 benchmark's model, and a --model choice.</summary>
-        public const string Lafan1 = "Runtime/Models/DeltaInterpolator-LaFAN1.onnx";
+        public const string Lafan1 = "Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx";
 
         /// <summary>
         /// <paramref name="relativePath"/> (e.g. <see cref="Default"/>) found as the class describes, or the

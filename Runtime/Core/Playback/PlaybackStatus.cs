@@ -47,6 +47,51 @@ namespace DeltaInterpolator.Core.Playback
         public void Fail(string reason, Exception? error = null) => Set(PlaybackState.Failed, reason, error);
 
         /// <summary>
+        /// Whether a frame should try <see cref="TryStart"/>: only while <see cref="PlaybackState.Waiting"/> with what the start
+        /// needs there (<paramref name="ready"/>, e.g. a settings asset). Never after a failure: a model that failed to load is not
+        /// loaded again every frame; the front end calls <see cref="Wait"/> (e.g. when the component is enabled again) to retry.
+        /// </summary>
+        public bool ShouldStart(bool ready) => ready && State == PlaybackState.Waiting;
+
+        /// <summary>
+        /// Starts the character with <paramref name="start"/> (load the model, bind the rig): <see cref="PlaybackState.Running"/> when it
+        /// returns, <see cref="PlaybackState.Failed"/> with one reason when it throws anything, whatever the type (an engine's own
+        /// assertion, a backend factory's exception, a refusal of the rig), so a failed start is never retried by the next frame.
+        /// Fatal exceptions (<see cref="IsFatal"/>) fail it too, then propagate.
+        /// </summary>
+        /// <returns>True when started; false when it failed now (<see cref="Reason"/> says why and what to do).</returns>
+        public bool TryStart(Action start, string model)
+        {
+            if (start == null) throw new ArgumentNullException(nameof(start));
+            try
+            {
+                start();
+                Run();
+                return true;
+            }
+            catch (Exception e)
+            {
+                Fail(StartFailure(model, e), e);
+                if (IsFatal(e)) throw;
+                return false;
+            }
+        }
+
+        /// <summary>Exceptions after which the process should not go on as if nothing happened: they are reported, then rethrown.</summary>
+        public static bool IsFatal(Exception error) => error is OutOfMemoryException || error is StackOverflowException || error is System.Threading.ThreadAbortException;
+
+        /// <summary>
+        /// The message for a failed start: the package's own refusals (a model that does not fit its contract, a rig that cannot be
+        /// mapped, a missing setting or engine) already say what and what to do; anything else is named with its type and what to do.
+        /// </summary>
+        public static string StartFailure(string model, Exception error)
+        {
+            if (error is DataFormatException || error is Retargeting.JointMapException || error is ArgumentException || error is InvalidOperationException) return error.Message;
+            return $"the in-betweening model '{model}' could not be loaded ({error.GetType().Name}: {error.Message}); " +
+                "check the model asset's inspector for errors, try another inference engine in the settings, then enable the component again";
+        }
+
+        /// <summary>
         /// <see cref="TransitionPlayer.BeginFrame"/> while running. When the engine fails in this frame the
         /// state becomes <see cref="PlaybackState.Failed"/> with <see cref="InferenceFailure"/>'s message;
         /// other exceptions (an event handler's) pass through. Allocates nothing unless it fails.

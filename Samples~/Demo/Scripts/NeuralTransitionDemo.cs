@@ -6,82 +6,111 @@ using UnityEngine;
 namespace DeltaInterpolator.Samples.Demo
 {
     /// <summary>
-    /// The demo scene's controls: an on-screen button and a key (Space) send the character, through neural
-    /// in-betweens, to the next of <see cref="_targetTimes"/> in <see cref="_target"/>, arriving after
-    /// <see cref="_seconds"/>; the panel shows the component's state and the last transition's outcome.
+    /// The demo scene's controls: the same keys drive two characters that play the same Animator Controller (idle, walk,
+    /// jump), side by side — one with Unity's own crossfades, one whose Animator transitions the <see cref="MotionInbetweener"/>
+    /// replaces with neural in-betweens (its settings' neural transitions, no code). <b>W</b> walks or stops, <b>Space</b> jumps,
+    /// <b>R</b> puts both back where they started; the camera follows them.
     /// </summary>
     /// <remarks>
-    /// Button and key are read through IMGUI events (<c>OnGUI</c>, <c>Event.current</c>), which Unity delivers
-    /// whatever Active Input Handling is set to (Input Manager, Input System or both), so the demo needs no
-    /// input package and no setting.
+    /// Keys are read through IMGUI events (<c>OnGUI</c>, <c>Event.current</c>), which Unity delivers whatever Active Input
+    /// Handling is set to, so the demo needs no input package and no setting. Only Animator parameters are set here
+    /// (<c>Walk</c>, <c>Jump</c>): what differs between the two characters is the transition, nothing else.
     /// </remarks>
-    [RequireComponent(typeof(MotionInbetweener))]
     public sealed class NeuralTransitionDemo : MonoBehaviour
     {
-        [Tooltip("The key that starts a transition (read through IMGUI events: works under either input setting).")]
-        [SerializeField] private KeyCode _key = KeyCode.Space;
+        [Tooltip("The character that keeps Unity's crossfades.")]
+        [SerializeField] private Animator? _crossfade = null;
 
-        [Tooltip("The clip whose poses the character transitions into.")]
-        [SerializeField] private AnimationClip? _target = null;
+        [Tooltip("The character whose Animator transitions are neural (it has a Motion Inbetweener).")]
+        [SerializeField] private Animator? _neural = null;
 
-        [Tooltip("Times in the target clip (seconds) of the poses to arrive at, used in turn.")]
-        [SerializeField] private float[] _targetTimes = { 1.5f, 3.0f, 5.5f, 7.5f };
+        [Tooltip("The camera that follows the two characters.")]
+        [SerializeField] private Camera? _camera = null;
 
-        [Tooltip("Length of each transition in seconds (the shipped model was trained on gaps of about 0.17-1.3 s).")]
-        [SerializeField] private float _seconds = 0.6f;
+        [SerializeField] private KeyCode _walkKey = KeyCode.W;
+        [SerializeField] private KeyCode _jumpKey = KeyCode.Space;
+        [SerializeField] private KeyCode _resetKey = KeyCode.R;
 
-        private MotionInbetweener? _inbetweener;
-        private int _next;
-        private string _last = "Press the button or Space.";
+        private bool _walking;
+        private Vector3 _crossfadeStart;
+        private Vector3 _neuralStart;
+        private Quaternion _crossfadeFacing;
+        private Quaternion _neuralFacing;
+        private Vector3 _cameraOffset;
 
-        private void OnEnable()
+        private void Start()
         {
-            _inbetweener = GetComponent<MotionInbetweener>();
-            _inbetweener.TransitionCompleted += OnCompleted;
-        }
-
-        private void OnDisable()
-        {
-            if (_inbetweener != null) _inbetweener.TransitionCompleted -= OnCompleted;
-        }
-
-        /// <summary>Sends the character to the next target pose (the button and the key call this).</summary>
-        public void Transition()
-        {
-            if (_inbetweener == null || _target == null || _targetTimes.Length == 0) return;
-            float time = _targetTimes[_next % _targetTimes.Length];
-            _next++;
-            try
+            if (_crossfade == null || _neural == null) return;
+            _crossfadeStart = _crossfade.transform.position;
+            _neuralStart = _neural.transform.position;
+            _crossfadeFacing = _crossfade.transform.rotation;
+            _neuralFacing = _neural.transform.rotation;
+            if (_camera != null)
             {
-                int id = _inbetweener.RequestTransition(_target, time, _seconds);
-                _last = $"Transition {id}: to {_target.name} at {time:0.0} s, arriving in {_seconds:0.00} s.";
-            }
-            catch (System.InvalidOperationException e)
-            {
-                _last = "No transition: " + e.Message;
+                Vector3 mid = Midpoint();
+                Vector3 c = _camera.transform.position;
+                _cameraOffset = new Vector3(c.x - mid.x, c.y - mid.y, c.z - mid.z);
             }
         }
 
-        private void OnCompleted(TransitionCompletion completion)
+        /// <summary>Starts or stops both characters walking (the W key and the button call this).</summary>
+        public void ToggleWalk()
         {
-            _last = $"Transition {completion.RequestId} {(completion.ReachedTarget ? "reached its target" : "was replaced")} at {completion.Time:0.00} s.";
+            _walking = !_walking;
+            foreach (Animator a in Both()) a.SetBool("Walk", _walking);
         }
+
+        /// <summary>Both characters jump (Space and the button).</summary>
+        public void Jump()
+        {
+            foreach (Animator a in Both()) a.SetTrigger("Jump");
+        }
+
+        /// <summary>Both characters back where they started, idle.</summary>
+        public void ResetPlaces()
+        {
+            if (_walking) ToggleWalk();
+            if (_crossfade != null) _crossfade.transform.SetPositionAndRotation(_crossfadeStart, _crossfadeFacing);
+            if (_neural != null) _neural.transform.SetPositionAndRotation(_neuralStart, _neuralFacing);
+        }
+
+        // After the characters moved this frame (root motion), so the camera does not lag a frame behind them.
+        private void LateUpdate()
+        {
+            if (_camera == null || _crossfade == null || _neural == null) return;
+            Vector3 mid = Midpoint();
+            _camera.transform.position = new Vector3(mid.x + _cameraOffset.x, mid.y + _cameraOffset.y, mid.z + _cameraOffset.z);
+        }
+
+        private Vector3 Midpoint()
+        {
+            Vector3 a = _crossfade!.transform.position;
+            Vector3 b = _neural!.transform.position;
+            return new Vector3(0.5f * (a.x + b.x), 0.5f * (a.y + b.y), 0.5f * (a.z + b.z));
+        }
+
+        private Animator[] Both() => _crossfade != null && _neural != null ? new[] { _crossfade, _neural } : new Animator[0];
 
         private void OnGUI()
         {
             Event e = Event.current;
-            if (e.type == EventType.KeyDown && e.keyCode == _key)
+            if (e.type == EventType.KeyDown)
             {
-                Transition();
-                e.Use();
+                if (e.keyCode == _walkKey) ToggleWalk();
+                else if (e.keyCode == _jumpKey) Jump();
+                else if (e.keyCode == _resetKey) ResetPlaces();
+                if (e.keyCode == _walkKey || e.keyCode == _jumpKey || e.keyCode == _resetKey) e.Use();
             }
 
-            GUILayout.BeginArea(new Rect(16, 16, 420, 160), GUI.skin.box);
-            GUILayout.Label("Δ-Interpolator demo: neural in-betweening");
-            string state = _inbetweener == null ? "no Motion Inbetweener" : _inbetweener.State == PlaybackState.Running ? "running" : _inbetweener.State + ": " + _inbetweener.FailureReason;
-            GUILayout.Label("Component: " + state);
-            if (GUILayout.Button($"Neural transition ({_key})", GUILayout.Height(32))) Transition();
-            GUILayout.Label(_last);
+            GUILayout.BeginArea(new Rect(16, 16, 460, 210), GUI.skin.box);
+            GUILayout.Label("Δ-Interpolator demo: the same controller, the same keys");
+            GUILayout.Label("Left: Unity's crossfade.   Right: neural transitions.");
+            MotionInbetweener? inbetweener = _neural != null ? _neural.GetComponent<MotionInbetweener>() : null;
+            string state = inbetweener == null ? "no Motion Inbetweener" : inbetweener.State == PlaybackState.Running ? "running" : inbetweener.State + ": " + inbetweener.FailureReason;
+            GUILayout.Label("Neural character: " + state);
+            if (GUILayout.Button(_walking ? $"Stop ({_walkKey})" : $"Walk ({_walkKey})", GUILayout.Height(28))) ToggleWalk();
+            if (GUILayout.Button($"Jump ({_jumpKey})", GUILayout.Height(28))) Jump();
+            if (GUILayout.Button($"Back to the start ({_resetKey})", GUILayout.Height(24))) ResetPlaces();
             GUILayout.EndArea();
         }
     }

@@ -25,7 +25,7 @@ namespace DeltaInterpolator.Tests.Inference
         [TestCase("Tests/Fixtures~/tiny-model.onnx")]
         [TestCase("Tests/Fixtures~/tiny-model.keys.onnx")]
         [TestCase("Tests/Fixtures~/tiny-model.frame.onnx")]
-        [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.onnx")]
+        [TestCase("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx")]
         public void AnExportedContractRoundTrips(string relative)
         {
             string path = Repository(relative);

@@ -18,9 +18,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [TestCase("Tests/Fixtures~/tiny-model.onnx")]
         [TestCase("Tests/Fixtures~/tiny-model.keys.onnx")]
         [TestCase("Tests/Fixtures~/tiny-model.frame.onnx")]
-        [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.onnx")]
-        [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.keys.onnx")]
-        [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.frame.onnx")]
+        [TestCase("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx")]
+        [TestCase("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.keys.onnx")]
+        [TestCase("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.frame.onnx")]
         public void ReadsWhatOnnxRuntimeReports(string relative)
         {
             string path = ModelContractJsonTests.Repository(relative);

@@ -71,7 +71,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [TestCase("Runtime/Models/DeltaInterpolator-CMU.onnx")]
         [TestCase("Runtime/Models/DeltaInterpolator-CMU.keys.onnx")]
         [TestCase("Runtime/Models/DeltaInterpolator-CMU.frame.onnx")]
-        [TestCase("Runtime/Models/DeltaInterpolator-LaFAN1.onnx")]
+        [TestCase("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx")]
         public void EveryShippedModelLiesInsideThePortableOperators(string relative)
         {
             string path = Inference.ModelContractJsonTests.Repository(relative);

@@ -107,7 +107,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "Examples:\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json\n" +
                 "  inbetween benchmark --data ../shared/data/lafan1 --stats ../shared/data/lafan1/train_stats_official.json \\\n" +
-                "      --model Runtime/Models/DeltaInterpolator-LaFAN1.onnx --lengths 5,15,30 --past-frames 1 --past-policy repeat");
+                "      --model Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx --lengths 5,15,30 --past-frames 1 --past-policy repeat");
             command.Options.Add(_data);
             command.Options.Add(_stats);
             command.Options.Add(_window);

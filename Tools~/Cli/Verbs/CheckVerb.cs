@@ -20,7 +20,7 @@ namespace DeltaInterpolator.Cli.Verbs
     {
         private readonly Argument<string> _model = new Argument<string>("MODEL")
         {
-            Description = "An exported graph, e.g. Runtime/Models/DeltaInterpolator-LaFAN1.onnx (NAME.keys.onnx and NAME.frame.onnx beside it are checked too).",
+            Description = "An exported graph, e.g. Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx (NAME.keys.onnx and NAME.frame.onnx beside it are checked too).",
         };
 
         private readonly Option<int?> _past = new Option<int?>("--past")
@@ -51,7 +51,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "the ranges the model was trained on, and with --skeleton a BVH file's joints against the model's.\n" +
                 "Prints every result as Info, Warning or Error with what to do;\n" +
                 "exit status 2 when any is an error (the model would be refused), 0 otherwise.\n" +
-                "Examples:\n  inbetween check Runtime/Models/DeltaInterpolator-LaFAN1.onnx --past 10 --gap 60\n" +
+                "Examples:\n  inbetween check Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx --past 10 --gap 60\n" +
                 "  inbetween check Tests/Fixtures~/tiny-model.onnx --skeleton ../shared/data/lafan1/walk4_subject1.bvh");
             command.Arguments.Add(_model);
             command.Options.Add(_past);

@@ -73,7 +73,7 @@ namespace DeltaInterpolator.Cli.Verbs
                 "per file, per subject group (the manifest's \"groups\") and in total over every non-key frame, the mean joint position\n" +
                 "error ÷ the file's leg length and L2Q, with each method's ratio to SLERP (totals are ratios of sums over frames).\n" +
                 "Example:\n  inbetween score Training/Python~/datasets/cmu.json Training/Python~/datasets/cmu-more.json --only '02_*' '09_*' '13_*' '38_*' --every 60 \\\n" +
-                "      --model Runtime/Models/DeltaInterpolator-CMU.onnx --model Runtime/Models/DeltaInterpolator-LaFAN1.onnx --json out/heldout.json");
+                "      --model Runtime/Models/DeltaInterpolator-CMU.onnx --model Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx --json out/heldout.json");
             command.Arguments.Add(_data);
             command.Options.Add(_every);
             command.Options.Add(_models);

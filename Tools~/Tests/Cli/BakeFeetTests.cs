@@ -15,7 +15,7 @@ namespace DeltaInterpolator.Tests.Cli
 
         private static string Sample => Path.Combine(Root, "Samples~", "Demo", "cmu_09_12_walk_navigate.bvh");
 
-        private static string Model => Path.Combine(Root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
+        private static string Model => Path.Combine(Root, "Samples~", "LaFAN1Model", "DeltaInterpolator-LaFAN1.onnx");
 
         [SetUp]
         public void CreateFolder()

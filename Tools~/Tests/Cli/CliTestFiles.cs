@@ -23,7 +23,7 @@ namespace DeltaInterpolator.Tests.Cli
             return temp[name];
         }
 
-        internal static string Model => Path.Combine(TestEnvironment.RepositoryRoot!, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
+        internal static string Model => Path.Combine(TestEnvironment.RepositoryRoot!, "Samples~", "LaFAN1Model", "DeltaInterpolator-LaFAN1.onnx");
 
         internal static string CmuClip => Path.Combine(TestEnvironment.RepositoryRoot!, "Samples~", "Demo", "cmu_01_01_jumps_turn.bvh");
 

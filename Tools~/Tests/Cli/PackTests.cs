@@ -8,6 +8,7 @@ using System.Linq;
 using System.Text;
 using DeltaInterpolator.Cli;
 using DeltaInterpolator.Cli.Packaging;
+using DeltaInterpolator.Core.Inference;
 using NUnit.Framework;
 
 namespace DeltaInterpolator.Tests.Cli
@@ -183,7 +184,10 @@ namespace DeltaInterpolator.Tests.Cli
                 }
             }
 
-            Assert.That(imported, Does.Contain("Runtime/Models/DeltaInterpolator-CMU.onnx").And.Contain("Runtime/Models/DeltaInterpolator-CMU.onnx.meta"), "the shipped models are imported");
+            Assert.That(imported, Does.Contain("Runtime/Models/DeltaInterpolator-CMU.onnx").And.Contain("Runtime/Models/DeltaInterpolator-CMU.onnx.meta"), "the default model is imported");
+            // Issue 27: the non-commercial LaFAN1 graphs enter no project with the package, only with their opt-in sample.
+            Assert.That(imported.Where(e => e.Contains("DeltaInterpolator-LaFAN1")), Is.Empty, "the LaFAN1 model is imported with the package");
+            Assert.That(entries, Does.Contain(ShippedModels.Lafan1).And.Contain(ShippedModels.Lafan1 + ".meta"), "the LaFAN1 model is carried as its sample");
             Assert.That(entries.Any(e => e.EndsWith(".py", StringComparison.Ordinal) || e.EndsWith(".pt", StringComparison.Ordinal)), Is.False,
                 "Training/Python~ and Tests/Fixtures~ are not carried at all");
 

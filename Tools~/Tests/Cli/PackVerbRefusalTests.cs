@@ -71,7 +71,7 @@ namespace DeltaInterpolator.Tests.Cli
         }
 
         [TestCase("Evil\\..\\..\\x.cs", "'\\'")]
-        [TestCase("Bell\u0007\u001b]0;t.cs", "control")]
+        [TestCase("Bell\u0007\u001b]0;t.cs", "control", TestName = "PackRefusesFileNamesAnArchiveCannotHoldSafely(Bell BEL ESC]0;t.cs)")]
         public void PackRefusesFileNamesAnArchiveCannotHoldSafely(string name, string phrase)
         {
             if (OperatingSystem.IsWindows()) Assert.Ignore("such names cannot exist on Windows");

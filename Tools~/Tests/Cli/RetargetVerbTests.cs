@@ -19,8 +19,8 @@ namespace DeltaInterpolator.Tests.Cli
         public void SetUp()
         {
             string? root = TestEnvironment.RepositoryRoot;
-            _model = root == null ? "" : Path.Combine(root, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
-            if (!File.Exists(_model)) Assert.Ignore("Runtime/Models/DeltaInterpolator-LaFAN1.onnx absent; skipping the retarget verb tests.");
+            _model = root == null ? "" : Path.Combine(root, "Samples~", "LaFAN1Model", "DeltaInterpolator-LaFAN1.onnx");
+            if (!File.Exists(_model)) Assert.Ignore("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx absent; skipping the retarget verb tests.");
             _dir = Path.Combine(Path.GetTempPath(), "retarget-verb-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(_dir);
         }

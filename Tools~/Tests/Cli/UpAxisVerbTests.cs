@@ -25,8 +25,8 @@ namespace DeltaInterpolator.Tests.Cli
         [SetUp]
         public void SetUp()
         {
-            _model = Path.Combine(TestEnvironment.RepositoryRoot!, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
-            if (!File.Exists(_model)) Assert.Ignore("Runtime/Models/DeltaInterpolator-LaFAN1.onnx absent; skipping.");
+            _model = Path.Combine(TestEnvironment.RepositoryRoot!, "Samples~", "LaFAN1Model", "DeltaInterpolator-LaFAN1.onnx");
+            if (!File.Exists(_model)) Assert.Ignore("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx absent; skipping.");
             _dir = new TempFolder();
             _dir.Write("map.json", RetargetFixtures.SourceMapJson(Model));
         }

@@ -29,7 +29,7 @@ using System.Text.RegularExpressions;
 static class Program
 {
     static readonly List<string> Violations = new();
-    static readonly HashSet<string> StubNames = new() { "UnityEngine", "UnityEditor", "Unity.InferenceEngine", "Unity.InferenceEngine.ONNX.Editor" };
+    static readonly HashSet<string> StubNames = new() { "UnityEngine", "UnityEditor", "Unity.InferenceEngine", "Unity.InferenceEngine.ONNX.Editor", "Unity.Timeline" };
 
     static int Main(string[] args)
     {
@@ -54,7 +54,7 @@ static class Program
         foreach (var t in types) CheckJob(t, types);
         foreach (var t in types) CheckSerialized(t);
         // Menu items live in the Editor assembly: a player configuration has none to hold the docs against.
-        if (package.Any(a => a.GetName().Name == "DeltaInterpolator.Editor")) CheckMenus(types, args.Skip(3).ToList(), root);
+        if (package.Any(a => a.GetName().Name == "DeltaInterpolator.Editor")) CheckMenus(types, args.Skip(3).ToList(), root, OptionalMenus(dir, stubDir));
         CheckPackageJson(root);
         CheckFriends(package, dir);
         foreach (var v in Violations) Console.WriteLine(v);
@@ -228,7 +228,7 @@ static class Program
     static readonly Regex MenuPath = new(@"\*((?:Add Component|Assets|Window|GameObject|Component|Tools) → [^*\n]+)\*");
     // Unity's own menus the docs walk through: the path and everything below it are Unity's.
     // (Test Runner: com.unity.test-framework 1.4.6, UnityEditor.TestRunner/TestRunnerWindow.cs:72.)
-    static readonly string[] UnityOwnMenus = { "Window → Package Manager", "Window → General → Test Runner" };
+    static readonly string[] UnityOwnMenus = { "Window → Package Manager", "Window → Sequencing", "Window → General → Test Runner" };
     // Unity's own sub-menus the docs name as a place ("the baker is under *Window → Animation*"): only the bare path is Unity's.
     static readonly string[] UnitySubMenus = { "Window → Animation", "Window → General" };
     // A menu path inside a message: a top-level menu (or the Project window's Create menu, which is Assets → Create, or
@@ -240,9 +240,49 @@ static class Program
     // (Window → Animation → Animation: Unity's Animation window, which a message may name mid-sentence.)
     static readonly string[] UnityOwnMessageMenus = { "Window/Package Manager", "Window/Animation/Animation", "Project Settings", "Edit/Project Settings", "File" };
 
-    static void CheckMenus(List<Type> types, List<string> docs, string root)
+    // Menus declared by assemblies an optional package brings (the Timeline demo's builder): declared in another Editor
+    // configuration beside this one (unity_compile.py's editor+timeline), so a doc naming them is right there.
+    static List<string> OptionalMenus(string dir, string stubDir)
     {
-        var menuItems = new List<string>();
+        var items = new List<string>();
+        string? parent = Path.GetDirectoryName(Path.GetFullPath(dir).TrimEnd(Path.DirectorySeparatorChar));
+        if (parent == null) return items;
+        foreach (var other in Directory.GetDirectories(parent, "editor*"))
+        {
+            if (Path.GetFullPath(other).TrimEnd(Path.DirectorySeparatorChar) == Path.GetFullPath(dir).TrimEnd(Path.DirectorySeparatorChar)) continue;
+            var context = new AssemblyLoadContext("unity-rules-" + Path.GetFileName(other), isCollectible: true);
+            context.Resolving += (ctx, name) =>
+            {
+                foreach (var d in new[] { other, stubDir })
+                {
+                    var p = Path.Combine(d, name.Name + ".dll");
+                    if (File.Exists(p)) return ctx.LoadFromAssemblyPath(Path.GetFullPath(p));
+                }
+                return null;
+            };
+            foreach (var path in Directory.GetFiles(other, "DeltaInterpolator.*.dll"))
+            {
+                if (File.Exists(Path.Combine(dir, Path.GetFileName(path)))) continue; // compiled here too: its menus count here already
+                if (Path.GetFileNameWithoutExtension(path).EndsWith(".Tests")) continue; // as for this configuration: tests declare no menus
+                try
+                {
+                    foreach (var t in Types(context.LoadFromAssemblyPath(Path.GetFullPath(path))))
+                        foreach (var m in t.GetMethods(All))
+                            foreach (var a in m.CustomAttributes.Where(a => a.AttributeType.FullName == "UnityEditor.MenuItem" && a.ConstructorArguments.Count > 0))
+                                items.Add((string)a.ConstructorArguments[0].Value!);
+                }
+                catch (FileNotFoundException)
+                {
+                    // An assembly whose references that configuration alone has: its menus stay unknown here, so a doc naming one is reported.
+                }
+            }
+        }
+        return items;
+    }
+
+    static void CheckMenus(List<Type> types, List<string> docs, string root, List<string> optionalMenus)
+    {
+        var menuItems = new List<string>(optionalMenus);
         var addComponent = new List<string>();
         var createAsset = new List<string>();
         foreach (var t in types)

@@ -270,7 +270,7 @@ def _evaluate_export_fixtures(sub) -> None:
                     "--checkpoint Training/runs/runtime/checkpoint.pt --out out/runtime.onnx\n"
                     "Re-export a shipped model in the current contract (weights read back from its whole graph):\n"
                     "  PYTHONPATH=Training/Python~ python3 -m deltainterp export --checkpoint "
-                    "Runtime/Models/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
+                    "Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx --out /tmp/m.onnx --name DeltaInterpolator-LaFAN1")
     p.add_argument("--checkpoint", required=True,
                    help="checkpoint.pt from `train`, or an exported whole graph (.onnx, any contract version)")
     p.add_argument("--out", required=True, help="output path ending in .onnx")

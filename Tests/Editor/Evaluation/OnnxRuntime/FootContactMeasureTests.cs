@@ -43,8 +43,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             string lafan = TestEnvironment.RequireLafan1();
             string data = Path.GetDirectoryName(lafan)!;
-            // The default model (CMU), as issue 29 measures it: RequireShippedModel names the LaFAN1 one.
-            string defaultModel = Path.Combine(Path.GetDirectoryName(ShippedModelTests.RequireShippedModel())!, Path.GetFileName(ShippedModels.Default));
+            // The default model (CMU), as issue 29 measures it.
+            string defaultModel = ShippedModelTests.RequireDefaultModel();
             using Inbetweener model = OnnxRuntimeInbetweener.Load(defaultModel);
             FilledMotionContactClassifier? classifier = Classifier();
             var totals = new Totals();

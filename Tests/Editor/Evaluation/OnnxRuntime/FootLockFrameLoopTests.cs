@@ -186,7 +186,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         private static string RequireDefaultModel()
         {
-            string path = Path.Combine(Path.GetDirectoryName(ShippedModelTests.RequireShippedModel())!, "DeltaInterpolator-CMU.onnx");
+            string path = ShippedModelTests.RequireDefaultModel();
             if (!File.Exists(path)) Assert.Ignore($"{path} not found; skipping.");
             return path;
         }

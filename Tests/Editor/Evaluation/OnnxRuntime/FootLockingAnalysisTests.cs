@@ -34,7 +34,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void LockingWithTheTruthsContactsSkatesLessThanWithLabelledOnesAndBothLessThanNone(int every)
         {
             string lafan = TestEnvironment.RequireLafan1();
-            string modelPath = Path.Combine(Path.GetDirectoryName(ShippedModelTests.RequireShippedModel())!, "DeltaInterpolator-CMU.onnx");
+            string modelPath = ShippedModelTests.RequireDefaultModel();
             if (!File.Exists(modelPath)) Assert.Ignore($"{modelPath} not found; skipping.");
             using Inbetweener model = OnnxRuntimeInbetweener.Load(modelPath);
             var totals = new Totals[2];

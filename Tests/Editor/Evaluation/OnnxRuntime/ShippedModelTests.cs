@@ -12,24 +12,40 @@ using NUnit.Framework;
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
-    /// The shipped model (Runtime/Models/DeltaInterpolator-LaFAN1.onnx): it loads with its lazy graphs,
+    /// The shipped model (Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx): it loads with its lazy graphs,
     /// lazy frames equal whole frames, and on the LaFAN1 benchmark it beats SLERP at 5, 15 and 30 frames
     /// in L2Q and L2P. Skips while the model is not exported yet or LaFAN1 is absent.
     /// </summary>
     [TestFixture]
     public sealed class ShippedModelTests
     {
+        /// <summary>The default model (CMU) in <c>Runtime/Models</c>, found from the test assembly's folder upwards.</summary>
+        internal static string RequireDefaultModel()
+        {
+            string? dir = AppContext.BaseDirectory;
+            while (dir != null)
+            {
+                string candidate = Path.Combine(dir, ShippedModels.Default);
+                if (File.Exists(candidate)) return candidate;
+                dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
+            }
+
+            Assert.Ignore(ShippedModels.Default + " is not there; skipping.");
+            return "";
+        }
+
+        /// <summary>The LaFAN1 model, the opt-in sample's (<see cref="ShippedModels.Lafan1"/>), found from the test assembly's folder upwards.</summary>
         internal static string RequireShippedModel()
         {
             string? dir = AppContext.BaseDirectory;
             while (dir != null)
             {
-                string candidate = Path.Combine(dir, "Runtime", "Models", "DeltaInterpolator-LaFAN1.onnx");
+                string candidate = Path.Combine(dir, "Samples~", "LaFAN1Model", "DeltaInterpolator-LaFAN1.onnx");
                 if (File.Exists(candidate)) return candidate;
                 dir = Path.GetDirectoryName(dir.TrimEnd(Path.DirectorySeparatorChar));
             }
 
-            Assert.Ignore("Runtime/Models/DeltaInterpolator-LaFAN1.onnx is not there yet (python3 -m deltainterp export --checkpoint Training/runs/runtime/checkpoint.pt --out Runtime/Models/DeltaInterpolator-LaFAN1.onnx); skipping the shipped-model tests.");
+            Assert.Ignore("Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx is not there yet (python3 -m deltainterp export --checkpoint Training/runs/runtime/checkpoint.pt --out Samples~/LaFAN1Model/DeltaInterpolator-LaFAN1.onnx); skipping the shipped-model tests.");
             return "";
         }
 

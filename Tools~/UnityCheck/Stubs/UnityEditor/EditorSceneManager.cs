@@ -24,5 +24,8 @@ namespace UnityEditor.SceneManagement
 
         // source: unity:Editor/Mono/EditorSceneManager.cs
         public static bool SaveScene(Scene scene, string dstScenePath) => throw null!;
+
+        // source: unity:Editor/Mono/EditorSceneManager.cs
+        public static bool SaveCurrentModifiedScenesIfUserWantsTo() => throw null!;
     }
 }

@@ -26,6 +26,8 @@ namespace UnityEditor
 
         public float floatValue { get => throw null!; set => throw null!; }
 
+        public string stringValue { get => throw null!; set => throw null!; }
+
         public void Dispose() => throw null!;
     }
 }

@@ -5,5 +5,7 @@ namespace UnityEngine
     public enum KeyCode
     {
         Space = 32,
+        R = 114,
+        W = 119,
     }
 }

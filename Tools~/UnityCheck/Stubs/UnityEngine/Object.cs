@@ -20,13 +20,13 @@ namespace UnityEngine
     {
         public string name { get => throw null!; set => throw null!; }
 
+        public HideFlags hideFlags { get => throw null!; set => throw null!; }
+
         public static void DestroyImmediate(Object obj) => throw null!;
 
         public static T Instantiate<T>(T original) where T : Object => throw null!;
 
         public static void Destroy(Object obj) => throw null!;
-
-        public HideFlags hideFlags { get => throw null!; set => throw null!; }
 
         public static void DontDestroyOnLoad(Object target) => throw null!;
 

@@ -24,5 +24,7 @@ namespace UnityEngine
         public Transform Find(string n) => throw null!;
 
         public void SetParent(Transform parent, bool worldPositionStays) => throw null!;
+
+        public void SetPositionAndRotation(Vector3 position, Quaternion rotation) => throw null!;
     }
 }

@@ -56,6 +56,8 @@ namespace UnityEngine.Animations
             where T : struct, IAnimationJob => throw null!;
 
         public void SetProcessInputs(bool value) => throw null!;
+
+        public static implicit operator Playable(AnimationScriptPlayable playable) => throw null!;
     }
 
     // source: unity:Modules/Animation/ScriptBindings/AnimationClipPlayable.bindings.cs
@@ -72,5 +74,19 @@ namespace UnityEngine.Animations
     public partial struct AnimationPlayableOutput : IPlayableOutput
     {
         public static AnimationPlayableOutput Create(PlayableGraph graph, string name, Animator target) => throw null!;
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationMixerPlayable.bindings.cs
+    public partial struct AnimationMixerPlayable : IPlayable
+    {
+        public static AnimationMixerPlayable Create(PlayableGraph graph, int inputCount = 0) => throw null!;
+
+        public static implicit operator Playable(AnimationMixerPlayable playable) => throw null!;
+    }
+
+    // source: unity:Modules/Animation/Managed/AnimationPlayableBinding.cs
+    public static partial class AnimationPlayableBinding
+    {
+        public static PlayableBinding Create(string name, Object key) => throw null!;
     }
 }

@@ -1,5 +1,67 @@
+using System.Collections.Generic;
+
 namespace UnityEngine.Playables
 {
+    // source: unity:Runtime/Export/Director/Playable.cs
+    public partial struct Playable : IPlayable
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableBindings.cs
+    public partial struct PlayableBinding
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableAsset.cs
+    public partial interface IPlayableAsset
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableAsset.cs
+    public abstract partial class PlayableAsset : ScriptableObject, IPlayableAsset
+    {
+        public abstract Playable CreatePlayable(PlayableGraph graph, GameObject owner);
+
+        public virtual IEnumerable<PlayableBinding> outputs => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Director/IPlayableBehaviour.cs
+    public partial interface IPlayableBehaviour
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/FrameData.cs
+    public partial struct FrameData
+    {
+    }
+
+    // source: unity:Runtime/Export/Director/PlayableBehaviour.cs
+    public abstract partial class PlayableBehaviour : IPlayableBehaviour
+    {
+        public PlayableBehaviour() => throw null!;
+
+        public virtual void OnPlayableDestroy(Playable playable) => throw null!;
+
+        public virtual void PrepareFrame(Playable playable, FrameData info) => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Director/ScriptPlayable.cs
+    public partial struct ScriptPlayable<T> : IPlayable
+        where T : class, IPlayableBehaviour, new()
+    {
+        public static ScriptPlayable<T> Create(PlayableGraph graph, int inputCount = 0) => throw null!;
+
+        public T GetBehaviour() => throw null!;
+
+        public static implicit operator Playable(ScriptPlayable<T> playable) => throw null!;
+    }
+
+    // source: unity:Runtime/Export/Director/ScriptPlayableOutput.cs
+    public partial struct ScriptPlayableOutput : IPlayableOutput
+    {
+        public static ScriptPlayableOutput Create(PlayableGraph graph, string name) => throw null!;
+    }
+
     // source: unity:Runtime/Export/Director/IPlayable.cs
     public partial interface IPlayable
     {
@@ -40,10 +102,16 @@ namespace UnityEngine.Playables
     // source: unity:Runtime/Export/Director/PlayableExtensions.cs
     public static partial class PlayableExtensions
     {
+        public static bool IsValid<U>(this U playable)
+            where U : struct, IPlayable => throw null!;
+
         public static void Pause<U>(this U playable)
             where U : struct, IPlayable => throw null!;
 
         public static void SetTime<U>(this U playable, double value)
+            where U : struct, IPlayable => throw null!;
+
+        public static void SetSpeed<U>(this U playable, double value)
             where U : struct, IPlayable => throw null!;
     }
 

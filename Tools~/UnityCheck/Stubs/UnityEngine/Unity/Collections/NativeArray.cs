@@ -34,3 +34,12 @@ namespace Unity.Collections
         public ReadOnlySpan<T> AsReadOnlySpan() => throw null!;
     }
 }
+
+namespace Unity.Collections
+{
+    // source: unity:Runtime/Export/Collections/NativeCollectionAccessPolicies.cs
+    [System.AttributeUsage(System.AttributeTargets.Field | System.AttributeTargets.Parameter | System.AttributeTargets.ReturnValue)]
+    public sealed partial class ReadOnlyAttribute : System.Attribute
+    {
+    }
+}

@@ -1,0 +1,95 @@
+using System;
+using System.Collections.Generic;
+
+namespace DeltaInterpolator.Core.Blends
+{
+    /// <summary>
+    /// What a track of clips plays where: each clip alone, and between consecutive clips (by start time) a
+    /// <see cref="TrackSpanKind.Blend"/> where they overlap or a <see cref="TrackSpanKind.Gap"/> where time lies between
+    /// them (clips that meet exactly cut). The mixer asks <see cref="Locate"/> every frame; it allocates nothing.
+    /// </summary>
+    /// <remarks>
+    /// Timeline blends only two clips at a time; where a clip lies inside another or a third clip reaches into a
+    /// blend, that blend is marked with a <see cref="TrackSpan.CrossfadeReason"/> and Timeline's crossfade plays.
+    /// </remarks>
+    public sealed class TrackLayout
+    {
+        private readonly TrackClipTiming[] _clips;
+        private readonly int[] _order;
+        private readonly TrackSpan[] _spans;
+
+        private TrackLayout(TrackClipTiming[] clips, int[] order, TrackSpan[] spans)
+        {
+            _clips = clips;
+            _order = order;
+            _spans = spans;
+        }
+
+        /// <summary>The clips as given.</summary>
+        public IReadOnlyList<TrackClipTiming> Clips => _clips;
+
+        /// <summary>Blends and gaps, in track order.</summary>
+        public IReadOnlyList<TrackSpan> Spans => _spans;
+
+        /// <summary>Lays out <paramref name="clips"/> (any order; indices in the result are theirs).</summary>
+        /// <exception cref="ArgumentException">Two clips start at the same time (<c>clips</c> named).</exception>
+        public static TrackLayout Create(IReadOnlyList<TrackClipTiming> clips)
+        {
+            if (clips == null) throw new ArgumentNullException(nameof(clips));
+            var copy = new TrackClipTiming[clips.Count];
+            var order = new int[clips.Count];
+            for (int i = 0; i < copy.Length; i++)
+            {
+                copy[i] = clips[i];
+                order[i] = i;
+            }
+
+            Array.Sort(order, (a, b) => copy[a].Start.CompareTo(copy[b].Start) != 0 ? copy[a].Start.CompareTo(copy[b].Start) : a.CompareTo(b));
+            var spans = new List<TrackSpan>();
+            for (int k = 0; k + 1 < order.Length; k++)
+            {
+                int a = order[k], b = order[k + 1];
+                TrackClipTiming from = copy[a], to = copy[b];
+                if (to.Start == from.Start)
+                {
+                    throw new ArgumentException($"clips {a} and {b} both start at {from.Start} s; expected clips at different start times, as Timeline places them", nameof(clips));
+                }
+
+                if (to.Start > from.End)
+                {
+                    spans.Add(new TrackSpan(TrackSpanKind.Gap, a, b, from.End, to.Start, from.LocalTime(from.End), to.LocalTime(to.Start), null));
+                }
+                else if (to.Start < from.End)
+                {
+                    double end = Math.Min(from.End, to.End);
+                    string? reason = null;
+                    if (to.End <= from.End) reason = $"clip {b} lies inside clip {a}";
+                    else if (k + 2 < order.Length && copy[order[k + 2]].Start < end) reason = $"clip {order[k + 2]} starts inside the blend of clips {a} and {b}";
+                    else if (k > 0 && copy[order[k - 1]].End > to.Start) reason = $"clip {order[k - 1]} still plays where clips {a} and {b} blend";
+                    spans.Add(new TrackSpan(TrackSpanKind.Blend, a, b, to.Start, end, from.LocalTime(to.Start), to.LocalTime(end), reason));
+                }
+            }
+
+            return new TrackLayout(copy, order, spans.ToArray());
+        }
+
+        /// <summary>What plays at track time <paramref name="time"/>: a span when it lies inside one (its end belongs to the clip after it), else the clip that covers it, else nothing.</summary>
+        public TrackMoment Locate(double time)
+        {
+            for (int s = 0; s < _spans.Length; s++)
+            {
+                TrackSpan span = _spans[s];
+                if (time >= span.Start && time < span.End) return new TrackMoment(TrackMomentKind.Span, -1, 0, s, (time - span.Start) / span.Duration);
+            }
+
+            // The latest-starting clip that covers the time plays (after a cut, the next clip).
+            for (int k = _order.Length - 1; k >= 0; k--)
+            {
+                TrackClipTiming clip = _clips[_order[k]];
+                if (time >= clip.Start && time <= clip.End) return new TrackMoment(TrackMomentKind.Clip, _order[k], clip.LocalTime(time), -1, 0);
+            }
+
+            return new TrackMoment(TrackMomentKind.None, -1, 0, -1, 0);
+        }
+    }
+}

@@ -1,0 +1,94 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Blends;
+using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Retargeting;
+using DeltaInterpolator.Unity;
+using UnityEngine;
+using UnityEngine.Animations;
+using UnityEngine.Playables;
+using UnityEngine.Timeline;
+
+namespace DeltaInterpolator.Timeline
+{
+    /// <summary>
+    /// A Timeline track like an Animation Track — bound to a character's <see cref="Animator"/>, its clips AnimationClips
+    /// placed in time — whose blends are neural: where two clips overlap the model goes from the first clip's pose where
+    /// the blend starts (its past frames as history) to the second's where it ends, and where time lies between two clips
+    /// from the first one's last frame to the second one's first, instead of a crossfade. Each blend is baked once when the
+    /// graph is built and read from a cache as the playhead moves (<see cref="NeuralBlendLayer"/>), so scrubbing in edit
+    /// mode shows what plays.
+    /// </summary>
+    [Serializable]
+    [TrackClipType(typeof(AnimationPlayableAsset), false)]
+    [TrackBindingType(typeof(Animator))]
+    public sealed class NeuralAnimationTrack : TrackAsset
+    {
+        [SerializeField]
+        [Tooltip("The model, engine and rig, as the Motion Inbetweener component takes them.")]
+        private InbetweenerSettings? settings;
+
+        /// <summary>The model, engine and rig the blends are baked with.</summary>
+        public InbetweenerSettings? Settings
+        {
+            get => settings;
+            set => settings = value;
+        }
+
+        /// <inheritdoc />
+        public override IEnumerable<PlayableBinding> outputs
+        {
+            get { yield return AnimationPlayableBinding.Create(name, this); }
+        }
+
+        /// <summary>
+        /// The mixer: the clips mixed by Timeline's weights with each blend's cached in-between laid over it. Without a
+        /// bound Animator or settings, or when the model cannot take the character, the clips crossfade as on an Animation
+        /// Track and the reason is logged.
+        /// </summary>
+        public override Playable CreateTrackMixer(PlayableGraph graph, GameObject go, int inputCount)
+        {
+            PlayableDirector? director = go != null ? go.GetComponent<PlayableDirector>() : null;
+            Animator? animator = director != null ? director.GetGenericBinding(this) as Animator : null;
+            string? problem = animator == null ? "no Animator is bound to it" : settings == null ? "it has no Inbetweener Settings" : null;
+            NeuralBlendLayer? layer = null;
+            if (problem == null)
+            {
+                try
+                {
+                    layer = NeuralBlendLayer.Create(animator!, settings!);
+                    var timings = new List<TrackClipTiming>();
+                    var clips = new List<AnimationClip?>();
+                    foreach (TimelineClip clip in GetClips())
+                    {
+                        AnimationClip? animation = clip.asset is AnimationPlayableAsset a ? a.clip : null;
+                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration));
+                        // A clip played faster or slower has no blend keys at Timeline's own times: its blends crossfade.
+                        clips.Add(Math.Abs(clip.timeScale - 1) < 1e-9 ? animation : null);
+                    }
+
+                    layer.Build(timings, clips);
+                }
+                catch (Exception e) when (e is InvalidOperationException || e is JointMapException || e is ModelContractException || e is ArgumentException)
+                {
+                    layer?.Dispose();
+                    layer = null;
+                    problem = e.Message;
+                }
+            }
+
+            if (layer == null)
+            {
+                Debug.LogWarning($"{name}: {problem}; its clips crossfade as on an Animation Track", this);
+                return AnimationMixerPlayable.Create(graph, inputCount);
+            }
+
+            AnimationScriptPlayable mixer = layer.CreatePlayable(graph, inputCount);
+            // The playhead reaches the layer through a script output of its own: its PrepareFrame runs before the animation jobs.
+            ScriptPlayable<NeuralTrackDriver> driver = ScriptPlayable<NeuralTrackDriver>.Create(graph);
+            driver.GetBehaviour().Bind(layer, director!);
+            ScriptPlayableOutput.Create(graph, name + " (neural blends)").SetSourcePlayable(driver);
+            return mixer;
+        }
+    }
+}

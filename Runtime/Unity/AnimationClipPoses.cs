@@ -1,0 +1,45 @@
+using System;
+using DeltaInterpolator.Core.Blends;
+using UnityEngine;
+
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>
+    /// An AnimationClip as Core's <see cref="IClipPoses"/>: the clip put on the character at a time with
+    /// <c>AnimationClip.SampleAnimation</c> (through the Animator's avatar for a humanoid clip) and the rig's bones read
+    /// back as a pose buffer. Sampling moves the bones: <see cref="NeuralBlendLayer"/> puts them back when it has read
+    /// every key of a track.
+    /// </summary>
+    internal sealed class AnimationClipPoses : IClipPoses
+    {
+        private readonly AnimationClip _clip;
+        private readonly GameObject _character;
+        private readonly Transform[] _bones;
+
+        public AnimationClipPoses(AnimationClip clip, GameObject character, Transform[] bones)
+        {
+            _clip = clip;
+            _character = character;
+            _bones = bones;
+        }
+
+        public string Name => _clip.name;
+
+        public void Sample(double time, Span<double> rootPosition, Span<double> localRotations)
+        {
+            _clip.SampleAnimation(_character, (float)time);
+            Vector3 p = _bones[0].localPosition;
+            rootPosition[0] = p.x;
+            rootPosition[1] = p.y;
+            rootPosition[2] = p.z;
+            for (int b = 0; b < _bones.Length; b++)
+            {
+                Quaternion q = _bones[b].localRotation;
+                localRotations[4 * b] = q.w;
+                localRotations[4 * b + 1] = q.x;
+                localRotations[4 * b + 2] = q.y;
+                localRotations[4 * b + 3] = q.z;
+            }
+        }
+    }
+}

@@ -1,0 +1,173 @@
+using System;
+using System.Collections.Generic;
+using DeltaInterpolator.Core.Blends;
+using DeltaInterpolator.Core.Characters;
+using DeltaInterpolator.Core.Inference;
+using Unity.Collections;
+using UnityEngine;
+using UnityEngine.Animations;
+using UnityEngine.Playables;
+using CoreJointMap = DeltaInterpolator.Core.Retargeting.JointMap;
+
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>
+    /// The neural blends of one track of clips on one character: what a Timeline track (the optional
+    /// <c>DeltaInterpolator.Timeline</c> assembly) builds when its graph is built. <see cref="Build"/> lays the clips out
+    /// (Core's <see cref="TrackLayout"/>) and gets every blend and gap from the shared <see cref="BlendCache"/> — baked
+    /// once, through the editor baker's Core path, with the model and rig the settings give the component —
+    /// and <see cref="Evaluate"/> shows, each frame, the cached pose at the playhead (no network run, no allocation).
+    /// </summary>
+    /// <remarks>
+    /// The cache is shared by every track in the process, so a graph rebuilt without a change (Timeline rebuilds on
+    /// every edit, on entering Play mode, on scrubbing after one) finds its blends again; the loaded models are shared the
+    /// same way and live as long as the domain (released when it unloads).
+    /// </remarks>
+    public sealed class NeuralBlendLayer : IDisposable
+    {
+        private static readonly BlendCache s_cache = new BlendCache(256);
+        private static readonly Dictionary<(InbetweeningModel, string), Inbetweener> s_models = new Dictionary<(InbetweeningModel, string), Inbetweener>();
+
+        static NeuralBlendLayer()
+        {
+            // The engines' workers hold native memory: release them when the Editor reloads scripts or the player quits.
+            AppDomain.CurrentDomain.DomainUnload += (sender, e) =>
+            {
+                foreach (Inbetweener network in s_models.Values) network.Dispose();
+                s_models.Clear();
+                s_cache.Clear();
+            };
+        }
+
+        private readonly Animator _animator;
+        private readonly CharacterRig _rig;
+        private readonly Transform[] _bones;
+        private readonly BlendModel _model;
+        private NativeArray<TransformStreamHandle> _handles;
+        private NativeArray<double> _pose;
+        private NativeArray<double> _shown;
+        private NativeArray<double> _weight;
+        private readonly double[] _sample;
+        private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
+        private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
+
+        private NeuralBlendLayer(Animator animator, CharacterRig rig, Transform[] bones, BlendModel model)
+        {
+            _animator = animator;
+            _rig = rig;
+            _bones = bones;
+            _model = model;
+            int n = bones.Length;
+            _handles = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
+            for (int b = 0; b < n; b++) _handles[b] = animator.BindStreamTransform(bones[b]);
+            _pose = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
+            _shown = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
+            _weight = new NativeArray<double>(1, Allocator.Persistent);
+            _sample = new double[3 + 4 * n];
+        }
+
+        /// <summary>
+        /// The layer of <paramref name="animator"/>'s character as <paramref name="settings"/> describe it (model, engine,
+        /// rig kind, joint map: what <see cref="MotionInbetweener"/> uses).
+        /// </summary>
+        /// <exception cref="ArgumentNullException">No animator or settings.</exception>
+        /// <exception cref="InvalidOperationException">The settings have no model, the engine is not installed, or the rig cannot be collected (what to do said).</exception>
+        /// <exception cref="Core.Retargeting.JointMapException">The rig cannot be mapped onto the model (bones named).</exception>
+        public static NeuralBlendLayer Create(Animator animator, InbetweenerSettings settings)
+        {
+            if (animator == null) throw new ArgumentNullException(nameof(animator));
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            InbetweeningModel model = settings.Model != null ? settings.Model : throw new InvalidOperationException($"the settings {settings.name} have no model; assign an imported in-betweening model");
+            IInferenceBackendFactory factory = InferenceBackends.Find(settings.Backend)
+                ?? throw new InvalidOperationException($"the inference engine '{settings.Backend}' is not installed; install its package (Sentis: com.unity.ai.inference 2.4.0 or later) or choose another in {settings.name}");
+            if (!s_models.TryGetValue((model, factory.Name), out Inbetweener? network))
+            {
+                network = ModelAssetGraphs.Load(model, factory, LazyGraphs.None);
+                s_models[(model, factory.Name)] = network;
+            }
+
+            CharacterRig rig = RigCollector.Collect(animator, settings, network.Contract.Skeleton, out CoreJointMap jointMap, out Transform[] bones);
+            // Refuses a rig the model cannot take now, with the bones named, rather than at the first blend.
+            rig.CreatePoseConverter(network.Contract.Skeleton, jointMap);
+            return new NeuralBlendLayer(animator, rig, bones, new BlendModel(network.Contract, network, jointMap));
+        }
+
+        /// <summary>The clips' layout of the last <see cref="Build"/>.</summary>
+        public TrackLayout Layout => _layout;
+
+        /// <summary>Each span's frames from the last <see cref="Build"/> (null where the track has a clip without animation).</summary>
+        public IReadOnlyList<BlendFrames?> Blends => _blends;
+
+        /// <summary>
+        /// Lays out <paramref name="timings"/> and gets each blend and gap between <paramref name="clips"/> (same order) from
+        /// the cache, baking the ones it lacks; a span the model cannot fill is said once in the Console. The bones are put
+        /// back as they were.
+        /// </summary>
+        /// <exception cref="ArgumentException">Not one clip per timing (<c>clips</c> named), or two clips at one start.</exception>
+        public void Build(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips)
+        {
+            if (timings == null) throw new ArgumentNullException(nameof(timings));
+            if (clips == null) throw new ArgumentNullException(nameof(clips));
+            if (clips.Count != timings.Count) throw new ArgumentException($"{clips.Count} clips for {timings.Count} timings; expected one clip per timing", nameof(clips));
+            _layout = TrackLayout.Create(timings);
+            _blends = new BlendFrames?[_layout.Spans.Count];
+            double[] saved = UnityPoses.Read(_bones, 0);
+            try
+            {
+                for (int s = 0; s < _blends.Length; s++)
+                {
+                    TrackSpan span = _layout.Spans[s];
+                    AnimationClip? from = clips[span.From], to = clips[span.To];
+                    if (from == null || to == null) continue;
+                    _blends[s] = s_cache.Get(_model, _rig, span, new AnimationClipPoses(from, _animator.gameObject, _bones), new AnimationClipPoses(to, _animator.gameObject, _bones),
+                        warning => Debug.LogWarning($"{_animator.name}: {warning}", _animator));
+                }
+            }
+            finally
+            {
+                _bones[0].localPosition = new Vector3((float)saved[0], (float)saved[1], (float)saved[2]);
+                for (int b = 0; b < _bones.Length; b++)
+                {
+                    int at = 3 + 4 * b;
+                    _bones[b].localRotation = new Quaternion((float)saved[at + 1], (float)saved[at + 2], (float)saved[at + 3], (float)saved[at]);
+                }
+            }
+        }
+
+        /// <summary>The mixer: an animation job with <paramref name="inputCount"/> inputs, mixed by their weights (Timeline sets them) before the blend pose is laid over.</summary>
+        public AnimationScriptPlayable CreatePlayable(PlayableGraph graph, int inputCount)
+        {
+            var job = new TrackBlendJob { Bones = _handles, Pose = _pose, Shown = _shown, Weight = _weight };
+            AnimationScriptPlayable playable = AnimationScriptPlayable.Create(graph, job, inputCount);
+            playable.SetProcessInputs(true);
+            return playable;
+        }
+
+        /// <summary>
+        /// What the mixer shows at track time <paramref name="time"/>: inside a blend or gap the model fills, its cached
+        /// pose (read between model frames as a bake is read back); elsewhere the clips as Timeline mixes them.
+        /// </summary>
+        public void Evaluate(double time)
+        {
+            TrackMoment moment = _layout.Locate(time);
+            BlendFrames? frames = moment.Kind == TrackMomentKind.Span ? _blends[moment.Span] : null;
+            if (frames == null || !frames.Sample(moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3)))
+            {
+                _weight[0] = 0;
+                return;
+            }
+
+            _sample.AsSpan().CopyTo(_pose.AsSpan());
+            _weight[0] = 1;
+        }
+
+        /// <summary>Frees the job's buffers (the graph owns the playable).</summary>
+        public void Dispose()
+        {
+            if (_handles.IsCreated) _handles.Dispose();
+            if (_pose.IsCreated) _pose.Dispose();
+            if (_shown.IsCreated) _shown.Dispose();
+            if (_weight.IsCreated) _weight.Dispose();
+        }
+    }
+}

@@ -1,0 +1,36 @@
+using System;
+using DeltaInterpolator.Core.Playback;
+using Unity.Collections;
+using UnityEngine.Animations;
+
+namespace DeltaInterpolator.Unity
+{
+    /// <summary>
+    /// The animation job of a neural track's mixer: its inputs (the track's clips, weighted by Timeline as on an
+    /// Animation Track) are mixed into the stream before it runs; where a blend or gap shows the model's in-between,
+    /// the main thread has put that pose in <see cref="Pose"/> with weight 1 and it replaces the rig's bones
+    /// (<see cref="PoseBlend.Apply"/>), elsewhere the weight is 0 and the clips play as they are. Root motion is the
+    /// clips' own (the stream's velocity is left as their mix made it).
+    /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
+    /// </summary>
+    internal struct TrackBlendJob : IAnimationJob
+    {
+        public NativeArray<TransformStreamHandle> Bones;
+        public NativeArray<double> Pose;
+        public NativeArray<double> Shown;
+        public NativeArray<double> Weight;
+
+        public void ProcessRootMotion(AnimationStream stream)
+        {
+        }
+
+        public void ProcessAnimation(AnimationStream stream)
+        {
+            if (Weight[0] <= 0) return;
+            var pose = new AnimatorPoseStream(stream, Bones, 0);
+            ReadOnlySpan<double> p = Pose.AsReadOnlySpan();
+            Span<double> s = Shown.AsSpan();
+            PoseBlend.Apply(ref pose, Weight[0], p.Slice(0, 3), p.Slice(3), s.Slice(0, 3), s.Slice(3));
+        }
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine.Timeline
+{
+    // source: timeline:Runtime/Animation/AnimationTrack.cs
+    public partial class AnimationTrack : TrackAsset
+    {
+        public TimelineClip CreateClip(AnimationClip clip) => throw null!;
+    }
+}
