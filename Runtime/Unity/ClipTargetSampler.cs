@@ -23,28 +23,17 @@ namespace DeltaInterpolator.Unity
     internal sealed class ClipTargetSampler : IDisposable
     {
         private readonly PlayableGraph _graph;
-        private readonly AnimationScriptPlayable _reader;
-        private NativeArray<double> _target;
-        private NativeArray<int> _requests;
+        private readonly TargetPoseReader _reader;
         private AnimationClipPlayable _clipPlayable;
         private AnimationClip? _clip;
         private float _time;
-        private int _request;
         private readonly HumanoidTargetCheck _check;
 
         public ClipTargetSampler(PlayableGraph graph, Animator animator, Transform[] boneTransforms, NativeArray<TransformStreamHandle> bones, int rootBone, ushort sortingOrder)
         {
             _graph = graph;
             _check = new HumanoidTargetCheck(animator, boneTransforms);
-            _target = new NativeArray<double>(3 + 4 * bones.Length, Allocator.Persistent);
-            _requests = new NativeArray<int>(2, Allocator.Persistent);
-            var job = new ClipTargetReadJob { Bones = bones, Target = _target, Requests = _requests, RootBone = rootBone };
-            _reader = AnimationScriptPlayable.Create(graph, job, 1);
-            _reader.SetProcessInputs(false);
-            AnimationPlayableOutput output = AnimationPlayableOutput.Create(graph, "Δ-Interpolator target", animator);
-            output.SetSourcePlayable(_reader);
-            output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
-            output.SetSortingOrder(sortingOrder);
+            _reader = new TargetPoseReader(graph, animator, bones, rootBone, sortingOrder, "Δ-Interpolator target");
         }
 
         /// <summary>Asks for the pose <paramref name="clip"/> shows at <paramref name="time"/>; it is read in the next animation evaluation.</summary>
@@ -58,14 +47,13 @@ namespace DeltaInterpolator.Unity
                 _clipPlayable.SetApplyPlayableIK(false);
                 // Held at the requested time: the graph's clock must not move it before it is read.
                 _clipPlayable.Pause();
-                _graph.Connect(_clipPlayable, 0, _reader, 0);
+                _graph.Connect(_clipPlayable, 0, _reader.Playable, 0);
                 _clip = clip;
             }
 
             _clipPlayable.SetTime(time);
             _time = time;
-            // A newer request supersedes one not read yet: only the latest counts as read.
-            _requests[0] = ++_request;
+            _reader.Ask();
         }
 
         /// <summary>
@@ -74,17 +62,17 @@ namespace DeltaInterpolator.Unity
         /// </summary>
         public ReadOnlySpan<double> Read()
         {
-            if (_request == 0 || _requests[1] != _request) return default;
+            ReadOnlySpan<double> pose = _reader.Read();
+            if (pose.IsEmpty) return default;
             // Humanoid targets come off a path no Unity code demonstrates: held once per clip against SampleAnimation's.
-            _check.Check(_clip!, _time, _target.AsReadOnlySpan());
-            return _target.AsReadOnlySpan();
+            _check.Check(_clip!, _time, pose);
+            return pose;
         }
 
         public void Dispose()
         {
             _check.Dispose();
-            if (_target.IsCreated) _target.Dispose();
-            if (_requests.IsCreated) _requests.Dispose();
+            _reader.Dispose();
         }
     }
 }

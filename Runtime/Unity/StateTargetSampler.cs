@@ -32,14 +32,11 @@ namespace DeltaInterpolator.Unity
     {
         private readonly PlayableGraph _graph;
         private readonly Animator _animator;
-        private readonly AnimationScriptPlayable _reader;
-        private NativeArray<double> _target;
-        private NativeArray<int> _requests;
+        private readonly TargetPoseReader _reader;
         private AnimatorControllerPlayable _controllerPlayable;
         private RuntimeAnimatorController? _controller;
         private int[] _parameterHashes = new int[0];
         private AnimatorControllerParameterType[] _parameterTypes = new AnimatorControllerParameterType[0];
-        private int _request;
         private int _stateHash;
         private int _layer;
         private int _checkedRequest;
@@ -49,15 +46,7 @@ namespace DeltaInterpolator.Unity
         {
             _graph = graph;
             _animator = animator;
-            _target = new NativeArray<double>(3 + 4 * bones.Length, Allocator.Persistent);
-            _requests = new NativeArray<int>(2, Allocator.Persistent);
-            var job = new ClipTargetReadJob { Bones = bones, Target = _target, Requests = _requests, RootBone = rootBone };
-            _reader = AnimationScriptPlayable.Create(graph, job, 1);
-            _reader.SetProcessInputs(false);
-            AnimationPlayableOutput output = AnimationPlayableOutput.Create(graph, "Δ-Interpolator state target", animator);
-            output.SetSourcePlayable(_reader);
-            output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
-            output.SetSortingOrder(sortingOrder);
+            _reader = new TargetPoseReader(graph, animator, bones, rootBone, sortingOrder, "Δ-Interpolator state target");
         }
 
         /// <summary>
@@ -85,23 +74,22 @@ namespace DeltaInterpolator.Unity
             _controllerPlayable.PlayInFixedTime(stateHash, layer, timeInState);
             _stateHash = stateHash;
             _layer = layer;
-            // A newer request supersedes one not read yet: only the latest counts as read.
-            _requests[0] = ++_request;
+            _reader.Ask();
         }
 
         /// <summary>The pose of the latest <see cref="Sample"/> once the animation evaluation has read it; empty while it has not.</summary>
         public ReadOnlySpan<double> Read()
         {
-            if (_request == 0 || _requests[1] != _request) return default;
-            if (_checkedRequest != _request) CheckEntered();
-            return _target.AsReadOnlySpan();
+            ReadOnlySpan<double> pose = _reader.Read();
+            if (!pose.IsEmpty && _checkedRequest != _reader.Request) CheckEntered();
+            return pose;
         }
 
         // The run-time check of the route: the copy took the Play in the evaluation that read the pose (a speed-0 controller
         // playable still updates its state machine). If the engine ever did not, the target would be another state's pose: say so once.
         private void CheckEntered()
         {
-            _checkedRequest = _request;
+            _checkedRequest = _reader.Request;
             AnimatorStateInfo entered = _controllerPlayable.GetCurrentAnimatorStateInfo(_layer);
             if (_warned || entered.fullPathHash == _stateHash || entered.shortNameHash == _stateHash) return;
             _warned = true;
@@ -128,7 +116,7 @@ namespace DeltaInterpolator.Unity
             // Speed 0 rather than paused: the state machine still updates (with no time passing), so a Play is applied
             // in the next evaluation, and the state stays at the time it was put in.
             _controllerPlayable.SetSpeed(0);
-            _graph.Connect(_controllerPlayable, 0, _reader, 0);
+            _graph.Connect(_controllerPlayable, 0, _reader.Playable, 0);
             _controller = controller;
             CacheParameters();
         }
@@ -148,10 +136,6 @@ namespace DeltaInterpolator.Unity
             }
         }
 
-        public void Dispose()
-        {
-            if (_target.IsCreated) _target.Dispose();
-            if (_requests.IsCreated) _requests.Dispose();
-        }
+        public void Dispose() => _reader.Dispose();
     }
 }
