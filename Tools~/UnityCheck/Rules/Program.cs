@@ -238,7 +238,7 @@ static class Program
     static readonly Regex MessageMenuStep = new(@"\s+(?:→|>)\s+");
     // Unity's own windows the messages walk through.
     // (Window → Animation → Animation: Unity's Animation window, which a message may name mid-sentence.)
-    static readonly string[] UnityOwnMessageMenus = { "Window/Package Manager", "Window/Animation/Animation", "Project Settings", "Edit/Project Settings", "File" };
+    static readonly string[] UnityOwnMessageMenus = { "Window/Package Manager", "Window/Animation/Animation", "Window/Sequencing", "Project Settings", "Edit/Project Settings", "File" };
 
     // Menus declared by assemblies an optional package brings (the Timeline demo's builder): declared in another Editor
     // configuration beside this one (unity_compile.py's editor+timeline), so a doc naming them is right there.
