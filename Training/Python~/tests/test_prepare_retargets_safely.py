@@ -156,6 +156,13 @@ def _alive(pid: int) -> bool:
         return f.read().split(")")[-1].split()[0] != "Z"
 
 
+def _default_signal_dispositions() -> None:
+    """The child starts with the default SIGHUP/SIGTERM/SIGINT dispositions whatever this run inherited: under `nohup`
+    (SIGHUP ignored) prepare rightly keeps an ignored SIGHUP ignored, which is not what this test asks about."""
+    for sig in (signal.SIGHUP, signal.SIGTERM, signal.SIGINT):
+        signal.signal(sig, signal.SIG_DFL)
+
+
 @pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT], ids=lambda s: s.name)
 def test_a_signal_ends_the_retargeting_children_and_removes_their_files(sig, tmp_path):
     data, cache, markers = tmp_path / "data", tmp_path / "cache", tmp_path / "markers"
@@ -168,7 +175,8 @@ def test_a_signal_ends_the_retargeting_children_and_removes_their_files(sig, tmp
     env = dict(os.environ, PYTHONPATH=str(TRAINING), INBETWEEN=f"{sys.executable} {tool}", MARKERS=str(markers))
     prepare = subprocess.Popen([sys.executable, "-m", "deltainterp", "prepare", "--data", str(data), "--out",
                                 str(tmp_path / "p.npz"), "--cache", str(cache), "--jobs", "2"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                               preexec_fn=_default_signal_dispositions)
     try:
         deadline = time.monotonic() + 60
         while len(list(markers.iterdir())) < 2 and time.monotonic() < deadline and prepare.poll() is None:
