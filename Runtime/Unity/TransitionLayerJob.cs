@@ -28,6 +28,8 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> RootVelocity;
 
         /// <summary>One flag per bone: true where a masked controller layer above drives the bone, which keeps the controller's pose; empty: no mask.</summary>
+        /// <remarks>Written once when the binder is built, only read by the job.</remarks>
+        [ReadOnly]
         public NativeArray<bool> KeptBones;
 
         public int RootBone;
