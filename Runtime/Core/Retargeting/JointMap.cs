@@ -140,14 +140,7 @@ namespace DeltaInterpolator.Core.Retargeting
         /// neck, which the map carries. The root node <c>Bip01</c> above the pelvis is unmapped.
         /// <see cref="BipedPelvis"/> is the same rig with the thighs under the pelvis.
         /// </summary>
-        public static JointMap Biped { get; } = Build("biped", new[]
-        {
-            "Hips", "Bip01_Pelvis|Bip01_Spine", "LeftUpLeg", "Bip01_L_Thigh", "LeftLeg", "Bip01_L_Calf", "LeftFoot", "Bip01_L_Foot", "LeftToe", "Bip01_L_Toe0",
-            "RightUpLeg", "Bip01_R_Thigh", "RightLeg", "Bip01_R_Calf", "RightFoot", "Bip01_R_Foot", "RightToe", "Bip01_R_Toe0",
-            "Spine", "Bip01_Spine1", "Spine1", "Bip01_Spine2", "Spine2", "Bip01_Spine3", "Neck", "Bip01_Neck", "Head", "Bip01_Head",
-            "LeftShoulder", "Bip01_L_Clavicle", "LeftArm", "Bip01_L_UpperArm", "LeftForeArm", "Bip01_L_Forearm", "LeftHand", "Bip01_L_Hand",
-            "RightShoulder", "Bip01_R_Clavicle", "RightArm", "Bip01_R_UpperArm", "RightForeArm", "Bip01_R_Forearm", "RightHand", "Bip01_R_Hand",
-        });
+        public static JointMap Biped { get; } = BuildBiped("biped", "Bip01_Pelvis|Bip01_Spine", "Bip01_Spine1", "Bip01_Spine2", "Bip01_Spine3");
 
         /// <summary>
         /// 3ds Max Biped rigs whose thighs hang under <c>Bip01_Pelvis</c> (Biped's Triangle Pelvis, and exporters that
@@ -156,14 +149,7 @@ namespace DeltaInterpolator.Core.Retargeting
         /// <c>Bip01_Spine2</c> are carried between it and the neck). Which of the two Biped maps a rig gets is decided
         /// by where its thighs hang (<see cref="Detect"/> counts only joints that fit the hierarchy).
         /// </summary>
-        public static JointMap BipedPelvis { get; } = Build("biped-pelvis", new[]
-        {
-            "Hips", "Bip01_Pelvis", "LeftUpLeg", "Bip01_L_Thigh", "LeftLeg", "Bip01_L_Calf", "LeftFoot", "Bip01_L_Foot", "LeftToe", "Bip01_L_Toe0",
-            "RightUpLeg", "Bip01_R_Thigh", "RightLeg", "Bip01_R_Calf", "RightFoot", "Bip01_R_Foot", "RightToe", "Bip01_R_Toe0",
-            "Spine", "Bip01_Spine", "Spine1", "Bip01_Spine1", "Spine2", "Bip01_Spine2", "Neck", "Bip01_Neck", "Head", "Bip01_Head",
-            "LeftShoulder", "Bip01_L_Clavicle", "LeftArm", "Bip01_L_UpperArm", "LeftForeArm", "Bip01_L_Forearm", "LeftHand", "Bip01_L_Hand",
-            "RightShoulder", "Bip01_R_Clavicle", "RightArm", "Bip01_R_UpperArm", "RightForeArm", "Bip01_R_Forearm", "RightHand", "Bip01_R_Hand",
-        });
+        public static JointMap BipedPelvis { get; } = BuildBiped("biped-pelvis", "Bip01_Pelvis", "Bip01_Spine", "Bip01_Spine1", "Bip01_Spine2");
 
         /// <summary>The built-in maps, in the order <see cref="Detect"/> prefers them on a tie.</summary>
         public static IReadOnlyList<JointMap> BuiltIn { get; } = new[] { Lafan1, Cmu, Mixamo, UnityHumanoid, Poser, Biped, BipedPelvis };
@@ -400,6 +386,16 @@ namespace DeltaInterpolator.Core.Retargeting
             int colon = name.LastIndexOf(':');
             return colon >= 0 ? name.Substring(colon + 1) : name;
         }
+
+        // The two Biped layouts differ only in the hips and spine chains; legs, neck, head and arms are named alike.
+        private static JointMap BuildBiped(string name, string hips, string spine, string spine1, string spine2) => Build(name, new[]
+        {
+            "Hips", hips, "LeftUpLeg", "Bip01_L_Thigh", "LeftLeg", "Bip01_L_Calf", "LeftFoot", "Bip01_L_Foot", "LeftToe", "Bip01_L_Toe0",
+            "RightUpLeg", "Bip01_R_Thigh", "RightLeg", "Bip01_R_Calf", "RightFoot", "Bip01_R_Foot", "RightToe", "Bip01_R_Toe0",
+            "Spine", spine, "Spine1", spine1, "Spine2", spine2, "Neck", "Bip01_Neck", "Head", "Bip01_Head",
+            "LeftShoulder", "Bip01_L_Clavicle", "LeftArm", "Bip01_L_UpperArm", "LeftForeArm", "Bip01_L_Forearm", "LeftHand", "Bip01_L_Hand",
+            "RightShoulder", "Bip01_R_Clavicle", "RightArm", "Bip01_R_UpperArm", "RightForeArm", "Bip01_R_Forearm", "RightHand", "Bip01_R_Hand",
+        });
 
         private static JointMap Build(string name, string?[] pairs)
         {
