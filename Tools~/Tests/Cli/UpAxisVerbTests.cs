@@ -34,6 +34,25 @@ namespace DeltaInterpolator.Tests.Cli
         [TearDown]
         public void TearDown() => _dir?.Dispose();
 
+        // A four-legged rig (humanoid names on a dog's bones) walking 40 frames along +Z in its rest pose, as dog.bvh.
+        private string WriteWalkingQuadruped()
+        {
+            Skeleton dog = UpAxisFixtures.Quadruped(Model);
+            var rotations = new double[dog.JointCount * 4 * 40];
+            var positions = new double[dog.JointCount * 3 * 40];
+            for (int f = 0; f < 40; f++)
+            {
+                for (int j = 0; j < dog.JointCount; j++)
+                {
+                    QuaternionD.Identity.Write(rotations, (f * dog.JointCount + j) * 4);
+                    Vector3D o = Vector3D.Read(dog.OffsetSpan, 3 * j);
+                    (j == 0 ? o + new Vector3D(0, 0, 2.0 * f) : o).Write(positions, (f * dog.JointCount + j) * 3);
+                }
+            }
+
+            return Write("dog.bvh", new MotionClip(dog, 40, 1.0 / 30.0, positions, rotations));
+        }
+
         private string Write(string name, MotionClip motion)
         {
             var channels = new BvhChannel[motion.Skeleton.JointCount][];
@@ -102,20 +121,7 @@ namespace DeltaInterpolator.Tests.Cli
         [Test]
         public void AFourLeggedRigIsRefusedNamingItsBonesOnRetargetAndBake()
         {
-            Skeleton dog = UpAxisFixtures.Quadruped(Model);
-            var rotations = new double[dog.JointCount * 4 * 40];
-            var positions = new double[dog.JointCount * 3 * 40];
-            for (int f = 0; f < 40; f++)
-            {
-                for (int j = 0; j < dog.JointCount; j++)
-                {
-                    QuaternionD.Identity.Write(rotations, (f * dog.JointCount + j) * 4);
-                    Vector3D o = Vector3D.Read(dog.OffsetSpan, 3 * j);
-                    (j == 0 ? o + new Vector3D(0, 0, 2.0 * f) : o).Write(positions, (f * dog.JointCount + j) * 3);
-                }
-            }
-
-            string input = Write("dog.bvh", new MotionClip(dog, 40, 1.0 / 30.0, positions, rotations));
+            string input = WriteWalkingQuadruped();
             CliRun run = CliHarness.Run("retarget", input, "--to", "model", "--map", _dir["map.json"], "--out", _dir["out.bvh"], "--model", _model);
             string line = CliHarness.AssertOneErrorLine(run, "src_Spine (Spine)");
             Assert.That(line, Does.StartWith(input + ": "));
@@ -127,20 +133,7 @@ namespace DeltaInterpolator.Tests.Cli
         [Test]
         public void AcceptReferencePoseKeepsTheRigAndEveryOutputSaysSo()
         {
-            Skeleton dog = UpAxisFixtures.Quadruped(Model);
-            var rotations = new double[dog.JointCount * 4 * 40];
-            var positions = new double[dog.JointCount * 3 * 40];
-            for (int f = 0; f < 40; f++)
-            {
-                for (int j = 0; j < dog.JointCount; j++)
-                {
-                    QuaternionD.Identity.Write(rotations, (f * dog.JointCount + j) * 4);
-                    Vector3D o = Vector3D.Read(dog.OffsetSpan, 3 * j);
-                    (j == 0 ? o + new Vector3D(0, 0, 2.0 * f) : o).Write(positions, (f * dog.JointCount + j) * 3);
-                }
-            }
-
-            string input = Write("dog.bvh", new MotionClip(dog, 40, 1.0 / 30.0, positions, rotations));
+            string input = WriteWalkingQuadruped();
             string refusal = CliHarness.AssertOneErrorLine(CliHarness.Run("retarget", input, "--to", "model", "--map", _dir["map.json"], "--out", _dir["out.bvh"], "--model", _model), "--accept-reference-pose");
             Assert.That(refusal, Does.Contain("--reference-frame"));
             Assert.That(refusal, Does.Contain("--map"));
