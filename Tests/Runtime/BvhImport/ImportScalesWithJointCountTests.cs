@@ -14,19 +14,31 @@ namespace DeltaInterpolator.Tests.BvhImport
     /// </summary>
     public sealed class ImportScalesWithJointCountTests
     {
-        [Test]
+        // A timing ratio, so a machine loaded by other work can push one measurement over the bound; a regression to
+        // the quadratic scan fails every try (see the measurements below), a pause on a loaded machine does not.
+        [Test, Retry(3)]
         public void SiblingJointsImportInLinearTime()
         {
-            byte[] small = Siblings(12_500), large = Siblings(100_000);
-            // Best of two of each (a loaded machine's pauses only ever add time). Eight times the joints: linear
-            // work takes about 8× as long, the old quadratic scan of later joints up to 64×.
-            double tSmall = BestOf(2, () => BvhClipImport.Import(small, "siblings.bvh", 0.01));
+            byte[] small = Siblings(6_250), large = Siblings(100_000);
+            // Warmed up first, so the small import is not timed in unoptimised code (which shrinks the ratio when the
+            // test runs alone and not in the suite). Best of three of each (a loaded machine's pauses only add time).
+            // Sixteen times the joints: linear work takes about 16× as long, the old scan of every later joint for each
+            // joint's children far longer. Measured on 2 cores at load 23: the linear importer 10.3× and 12.2× (alone,
+            // not warmed), the quadratic scan planted back 74.8×. The earlier bound (eight times the joints, at most 13×)
+            // sat close above the linear ratio: two suite runs here at load 18 measured 13.3× and 16.5× and failed.
+            BvhClipImport.Import(small, "siblings.bvh", 0.01);
+            double tSmall = BestOf(3, () => BvhClipImport.Import(small, "siblings.bvh", 0.01));
             BvhImportResult? result = null;
-            double tLarge = BestOf(2, () => result = BvhClipImport.Import(large, "siblings.bvh", 0.01));
+            double tLarge = BestOf(3, () => result = BvhClipImport.Import(large, "siblings.bvh", 0.01));
             Assert.That(result!.Joints, Has.Count.EqualTo(100_001));
-            TestContext.Out.WriteLine($"12,500 siblings {tSmall:0.000} s, 100,000 siblings {tLarge:0.000} s");
-            Assert.That(tLarge, Is.LessThan(13 * Math.Max(tSmall, 0.005)), $"12,500 siblings {tSmall:0.000} s, 100,000 siblings {tLarge:0.000} s: worse than linear");
+            string measured = $"6,250 siblings {tSmall:0.000} s, 100,000 siblings {tLarge:0.000} s ({tLarge / tSmall:0.0}×)";
+            TestContext.Out.WriteLine(measured);
+            Assert.That(tLarge, Is.LessThan(LinearBound * Math.Max(tSmall, 0.005)), measured + ": worse than linear");
         }
+
+        // Sixteen times the joints, at most this many times the time: 2.5 × the linear ratio, about half the quadratic
+        // scan's measured ratio.
+        private const double LinearBound = 40;
 
         [Test]
         public void AChainTooDeepForItsPathsIsRefusedBeforeAnyPathIsBuilt()
