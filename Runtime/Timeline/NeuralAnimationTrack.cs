@@ -61,10 +61,14 @@ namespace DeltaInterpolator.Timeline
                     var clips = new List<AnimationClip?>();
                     foreach (TimelineClip clip in GetClips())
                     {
-                        AnimationClip? animation = clip.asset is AnimationPlayableAsset a ? a.clip : null;
-                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration));
-                        // A clip played faster or slower has no blend keys at Timeline's own times: its blends crossfade.
-                        clips.Add(Math.Abs(clip.timeScale - 1) < 1e-9 ? animation : null);
+                        var playable = clip.asset as AnimationPlayableAsset;
+                        AnimationClip? animation = playable != null ? playable.clip : null;
+                        // As Timeline plays the clip: at its speed, wrapped where its playable loops (AnimationPlayableAsset
+                        // overrides the source clip's Loop Time unless set to UseSourceAsset).
+                        bool loops = playable != null && animation != null && (playable.loop == AnimationPlayableAsset.LoopMode.On
+                            || (playable.loop == AnimationPlayableAsset.LoopMode.UseSourceAsset && animation.isLooping));
+                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration, clip.timeScale, loops));
+                        clips.Add(animation);
                     }
 
                     layer.Build(timings, clips);
