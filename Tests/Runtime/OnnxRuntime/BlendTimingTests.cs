@@ -69,6 +69,27 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
+        public void ALoopingClipsTargetIsReadAtTheWrappedTime()
+        {
+            // The jumps loop and start 3.2 s into their 3.34 s animation: the blend's end, 0.3 s later, is 0.158 s into their second cycle.
+            IClipPoses walk = new MotionClipPoses("walk", _rig, _walk);
+            IClipPoses jumps = new MotionClipPoses("jumps", _rig, _jumps);
+            double length = 400 / 120.0;
+            TrackLayout layout = TrackLayout.Create(new[] { new TrackClipTiming(0, 2.6, 0, 3.0), new TrackClipTiming(2.3, 2.0, 3.2, length, loops: true) });
+            TrackSpan span = layout.Spans[0];
+            Assert.That(span.ToTime, Is.EqualTo(3.5 - length).Within(1e-9));
+
+            BlendFrames frames = new BlendCache().Get(Model(), _rig, span, walk, jumps);
+            Assert.That(frames.Mode, Is.EqualTo(BlendMode.Model));
+            double worst = WorstDifference(frames, span, walk, jumps, t => t, 3.5 - length);
+            TestContext.WriteLine($"looping target: largest difference from the bake at the wrapped time {worst:E2}");
+            Assert.That(worst, Is.LessThan(Tolerance));
+            double held = WorstDifference(frames, span, walk, jumps, t => t, length);
+            TestContext.WriteLine($"against a target held at the last frame: {held:E2}");
+            Assert.That(held, Is.GreaterThan(1e-2));
+        }
+
+        [Test]
         public void AClipAtSpeedTwoBlendsNeurallyAtTheTimesTheTrackPlaysIt()
         {
             // The walk at speed 2 (3 s of animation in 1.5 s), the jumps at speed 2 from 1.0 s: a 0.5 s blend, 14 missing
