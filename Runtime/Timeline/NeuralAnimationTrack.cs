@@ -35,10 +35,22 @@ namespace DeltaInterpolator.Timeline
             set => settings = value;
         }
 
+        // The character's IAnimationWindowPreview components, let into the Editor preview after this track's mix.
+        [NonSerialized]
+        private TrackPreviewComponents? _preview;
+
         /// <inheritdoc />
+        /// <remarks>
+        /// Timeline reads the outputs right after it connected the track's mixer to the timeline: in an Editor preview the
+        /// bound character's preview components are inserted after the mix then (<see cref="TrackPreviewComponents"/>).
+        /// </remarks>
         public override IEnumerable<PlayableBinding> outputs
         {
-            get { yield return AnimationPlayableBinding.Create(name, this); }
+            get
+            {
+                _preview?.Insert(this);
+                yield return AnimationPlayableBinding.Create(name, this);
+            }
         }
 
         /// <summary>
@@ -61,10 +73,14 @@ namespace DeltaInterpolator.Timeline
                     var clips = new List<AnimationClip?>();
                     foreach (TimelineClip clip in GetClips())
                     {
-                        AnimationClip? animation = clip.asset is AnimationPlayableAsset a ? a.clip : null;
-                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration));
-                        // A clip played faster or slower has no blend keys at Timeline's own times: its blends crossfade.
-                        clips.Add(Math.Abs(clip.timeScale - 1) < 1e-9 ? animation : null);
+                        var playable = clip.asset as AnimationPlayableAsset;
+                        AnimationClip? animation = playable != null ? playable.clip : null;
+                        // As Timeline plays the clip: at its speed, wrapped where its playable loops (AnimationPlayableAsset
+                        // overrides the source clip's Loop Time unless set to UseSourceAsset).
+                        bool loops = playable != null && animation != null && (playable.loop == AnimationPlayableAsset.LoopMode.On
+                            || (playable.loop == AnimationPlayableAsset.LoopMode.UseSourceAsset && animation.isLooping));
+                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration, clip.timeScale, loops));
+                        clips.Add(animation);
                     }
 
                     layer.Build(timings, clips);
@@ -77,16 +93,13 @@ namespace DeltaInterpolator.Timeline
                 }
             }
 
-            if (layer == null)
-            {
-                Debug.LogWarning($"{name}: {problem}; its clips crossfade as on an Animation Track", this);
-                return AnimationMixerPlayable.Create(graph, inputCount);
-            }
-
-            AnimationScriptPlayable mixer = layer.CreatePlayable(graph, inputCount);
+            if (layer == null) Debug.LogWarning($"{name}: {problem}; its clips crossfade as on an Animation Track", this);
+            Playable mixer = layer != null ? layer.CreatePlayable(graph, inputCount) : AnimationMixerPlayable.Create(graph, inputCount);
+            _preview ??= new TrackPreviewComponents();
+            var previewComponents = _preview.Built(mixer, animator != null ? animator.gameObject : null);
             // The playhead reaches the layer through a script output of its own: its PrepareFrame runs before the animation jobs.
             ScriptPlayable<NeuralTrackDriver> driver = ScriptPlayable<NeuralTrackDriver>.Create(graph);
-            driver.GetBehaviour().Bind(layer, director!);
+            driver.GetBehaviour().Bind(layer, director, previewComponents);
             ScriptPlayableOutput.Create(graph, name + " (neural blends)").SetSourcePlayable(driver);
             return mixer;
         }

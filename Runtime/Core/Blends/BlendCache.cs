@@ -13,7 +13,8 @@ namespace DeltaInterpolator.Core.Blends
     /// <summary>
     /// Every blend of a track computed once and served from memory: <see cref="Get"/> bakes a blend or gap the first
     /// time it is asked for — one bake of that gap through the editor baker's Core path (<see cref="CharacterBake.Run"/>:
-    /// the first clip's <see cref="BlendModel.PastFrames"/> frames up to the span's start as history, the second clip's
+    /// the first clip's <see cref="BlendModel.PastFrames"/> frames up to the span's start as history, read where the
+    /// track plays them (the clip's speed, its loop wrapped), the second clip's
     /// pose at its end as the target, the same model) — and returns the same <see cref="BlendFrames"/> whenever nothing
     /// the bake reads has changed, so moving the playhead, evaluating out of order and rebuilding an unchanged graph run
     /// no network.
@@ -75,15 +76,19 @@ namespace DeltaInterpolator.Core.Blends
             string? reason = span.CrossfadeReason ?? model.OutsideTrainedRange(missing);
             BlendMode mode = reason == null ? BlendMode.Model : span.Kind == TrackSpanKind.Blend ? BlendMode.Crossfade : BlendMode.Slerp;
 
-            // The keys the bake reads: past frames of the first clip up to the span's start, then the second clip's pose.
-            TransitionKeyPlan plan = TransitionKeyPlan.Create(span.FromTime, span.ToTime, mode == BlendMode.Model ? model.PastFrames : 1, Math.Max(1, missing), fps);
+            // The keys the bake reads: past frames of the first clip up to the span's start, one per model frame of track
+            // time and read where the track plays the clip then (its speed, its loop wrapped), then the second clip's pose.
+            // The history reaches back as far as the clip has played animation, in track seconds.
+            TrackClipTiming leaving = span.FromClip;
+            double played = Math.Max(0, leaving.Unwrapped(span.Start)) / leaving.Speed;
+            TransitionKeyPlan plan = TransitionKeyPlan.Create(played, span.ToTime, mode == BlendMode.Model ? model.PastFrames : 1, Math.Max(1, missing), fps);
             int bones = rig.Skeleton.JointCount, stride = 3 + 4 * bones;
             int poses = mode == BlendMode.Crossfade ? 0 : plan.PastFrames + 1;
             if (_poses.Length < poses * stride) _poses = new double[poses * stride];
             for (int k = 0; k < poses; k++)
             {
                 Span<double> pose = _poses.AsSpan(k * stride, stride);
-                if (k < plan.PastFrames) from.Sample(plan.FromTimes[k], pose.Slice(0, 3), pose.Slice(3));
+                if (k < plan.PastFrames) from.Sample(leaving.LocalTime(span.Start - (plan.PastFrames - 1 - k) / fps), pose.Slice(0, 3), pose.Slice(3));
                 else to.Sample(plan.ToTime, pose.Slice(0, 3), pose.Slice(3));
             }
 

@@ -4,7 +4,8 @@ namespace DeltaInterpolator.Core.Blends
 {
     /// <summary>
     /// Where one clip sits on a track, as Timeline places it: its start and duration on the track, where in its
-    /// animation it starts (clip-in) and that animation's length, all in seconds.
+    /// animation it starts (clip-in) and that animation's length, all in seconds; how fast it plays (Timeline's clip
+    /// speed) and whether its animation loops (then the animation time wraps, as Timeline's clip playable wraps it).
     /// </summary>
     public readonly struct TrackClipTiming
     {
@@ -13,16 +14,21 @@ namespace DeltaInterpolator.Core.Blends
         /// <param name="duration">How long the clip lasts on the track (&gt; 0).</param>
         /// <param name="clipIn">Time in the animation at the clip's start (≥ 0).</param>
         /// <param name="animationLength">The animation's own length (&gt; 0).</param>
-        public TrackClipTiming(double start, double duration, double clipIn, double animationLength)
+        /// <param name="speed">Animation seconds per track second (Timeline's clip speed, <c>TimelineClip.timeScale</c>; &gt; 0).</param>
+        /// <param name="loops">Whether the animation wraps at its end (a looping clip) rather than holding its last frame.</param>
+        public TrackClipTiming(double start, double duration, double clipIn, double animationLength, double speed = 1, bool loops = false)
         {
             if (!(start >= 0) || double.IsInfinity(start)) throw new ArgumentOutOfRangeException(nameof(start), start, "expected a clip start of at least 0 seconds");
             if (!(duration > 0) || double.IsInfinity(duration)) throw new ArgumentOutOfRangeException(nameof(duration), duration, "expected a clip duration above 0 seconds");
             if (!(clipIn >= 0) || double.IsInfinity(clipIn)) throw new ArgumentOutOfRangeException(nameof(clipIn), clipIn, "expected a clip-in of at least 0 seconds");
             if (!(animationLength > 0) || double.IsInfinity(animationLength)) throw new ArgumentOutOfRangeException(nameof(animationLength), animationLength, "expected an animation length above 0 seconds");
+            if (!(speed > 0) || double.IsInfinity(speed)) throw new ArgumentOutOfRangeException(nameof(speed), speed, "expected a clip speed above 0 (1: as authored)");
             Start = start;
             Duration = duration;
             ClipIn = clipIn;
             AnimationLength = animationLength;
+            Speed = speed;
+            Loops = loops;
         }
 
         /// <summary>Track time of the clip's first frame.</summary>
@@ -40,10 +46,27 @@ namespace DeltaInterpolator.Core.Blends
         /// <summary>The animation's own length.</summary>
         public double AnimationLength { get; }
 
+        /// <summary>Animation seconds per track second.</summary>
+        public double Speed { get; }
+
+        /// <summary>Whether the animation wraps at its end.</summary>
+        public bool Loops { get; }
+
         /// <summary>
-        /// The animation's time at track time <paramref name="trackTime"/>, held at its first and last frame: a blend's keys
-        /// never wrap a loop, so what the model starts from is the pose the clip shows there when it does not loop.
+        /// The animation's time at track time <paramref name="trackTime"/> as Timeline plays the clip there: clip-in plus
+        /// the track time since the start times the speed, wrapped into the animation when it loops, else held at its
+        /// last frame; held at 0 before the animation's first frame (a blend's history never reaches before it).
         /// </summary>
-        public double LocalTime(double trackTime) => Math.Max(0, Math.Min(AnimationLength, ClipIn + trackTime - Start));
+        public double LocalTime(double trackTime)
+        {
+            double unwrapped = Unwrapped(trackTime);
+            if (!(unwrapped > 0)) return 0;
+            if (!Loops) return Math.Min(AnimationLength, unwrapped);
+            double wrapped = unwrapped % AnimationLength;
+            return wrapped < 0 ? 0 : wrapped;
+        }
+
+        /// <summary>Animation seconds played from the animation's first frame to track time <paramref name="trackTime"/>, not wrapped or held (negative before it).</summary>
+        public double Unwrapped(double trackTime) => ClipIn + (trackTime - Start) * Speed;
     }
 }

@@ -57,7 +57,7 @@ namespace DeltaInterpolator.Core.Blends
 
                 if (to.Start > from.End)
                 {
-                    spans.Add(new TrackSpan(TrackSpanKind.Gap, a, b, from.End, to.Start, from.LocalTime(from.End), to.LocalTime(to.Start), null));
+                    spans.Add(new TrackSpan(TrackSpanKind.Gap, a, b, from, to, from.End, to.Start, null));
                 }
                 else if (to.Start < from.End)
                 {
@@ -66,7 +66,7 @@ namespace DeltaInterpolator.Core.Blends
                     if (to.End <= from.End) reason = $"clip {b} lies inside clip {a}";
                     else if (k + 2 < order.Length && copy[order[k + 2]].Start < end) reason = $"clip {order[k + 2]} starts inside the blend of clips {a} and {b}";
                     else if (k > 0 && copy[order[k - 1]].End > to.Start) reason = $"clip {order[k - 1]} still plays where clips {a} and {b} blend";
-                    spans.Add(new TrackSpan(TrackSpanKind.Blend, a, b, to.Start, end, from.LocalTime(to.Start), to.LocalTime(end), reason));
+                    spans.Add(new TrackSpan(TrackSpanKind.Blend, a, b, from, to, to.Start, end, reason));
                 }
             }
 

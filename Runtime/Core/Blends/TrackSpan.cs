@@ -7,15 +7,17 @@ namespace DeltaInterpolator.Core.Blends
     /// </summary>
     public readonly struct TrackSpan
     {
-        internal TrackSpan(TrackSpanKind kind, int from, int to, double start, double end, double fromTime, double toTime, string? crossfadeReason)
+        internal TrackSpan(TrackSpanKind kind, int from, int to, TrackClipTiming fromClip, TrackClipTiming toClip, double start, double end, string? crossfadeReason)
         {
             Kind = kind;
             From = from;
             To = to;
             Start = start;
             End = end;
-            FromTime = fromTime;
-            ToTime = toTime;
+            FromClip = fromClip;
+            ToClip = toClip;
+            FromTime = fromClip.LocalTime(start);
+            ToTime = toClip.LocalTime(end);
             CrossfadeReason = crossfadeReason;
         }
 
@@ -27,6 +29,12 @@ namespace DeltaInterpolator.Core.Blends
 
         /// <summary>Index of the clip the span arrives in.</summary>
         public int To { get; }
+
+        /// <summary>Where the clip the span leaves sits on the track (its history is read through it: speed, loop).</summary>
+        public TrackClipTiming FromClip { get; }
+
+        /// <summary>Where the clip the span arrives in sits on the track.</summary>
+        public TrackClipTiming ToClip { get; }
 
         /// <summary>Track time where the span starts.</summary>
         public double Start { get; }

@@ -68,6 +68,26 @@ namespace DeltaInterpolator.Tests.Blends
             Assert.That(clip.LocalTime(0.0), Is.EqualTo(0.0));
         }
 
+        [Test]
+        public void ALoopingClipWrapsAndAFasterClipAdvancesFaster()
+        {
+            var loop = new TrackClipTiming(1.0, 5.0, 0.5, 2.0, loops: true);
+            Assert.That(loop.LocalTime(2.0), Is.EqualTo(1.5));
+            Assert.That(loop.LocalTime(3.0), Is.EqualTo(0.5).Within(1e-12), "2.5 s into a 2 s loop: 0.5 s into its second cycle");
+            Assert.That(loop.LocalTime(5.75), Is.EqualTo(1.25).Within(1e-12));
+            Assert.That(loop.LocalTime(0.0), Is.EqualTo(0.0), "before the animation's first frame");
+            var fast = new TrackClipTiming(1.0, 1.0, 0.5, 2.0, speed: 2);
+            Assert.That(fast.LocalTime(1.5), Is.EqualTo(1.5));
+            Assert.That(fast.LocalTime(2.0), Is.EqualTo(2.0), "held at the last frame: it does not loop");
+            Assert.That(fast.Unwrapped(2.0), Is.EqualTo(2.5));
+
+            TrackLayout layout = TrackLayout.Create(new[] { loop, new TrackClipTiming(5.5, 1.0, 0.0, 1.0, speed: 0.5) });
+            TrackSpan blend = layout.Spans[0];
+            Assert.That(blend.FromTime, Is.EqualTo(1.0).Within(1e-12), "the loop's time where the blend starts (5.0 s in: 2.5 cycles)");
+            Assert.That(blend.ToTime, Is.EqualTo(0.25).Within(1e-12), "half a second at half speed");
+            Assert.That(layout.Locate(6.0).LocalTime, Is.EqualTo(0.25).Within(1e-12));
+        }
+
         [TestCase(-1.0, 1.0, 0.0, 1.0, "start")]
         [TestCase(double.NaN, 1.0, 0.0, 1.0, "start")]
         [TestCase(0.0, 0.0, 0.0, 1.0, "duration")]

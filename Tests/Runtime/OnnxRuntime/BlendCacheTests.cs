@@ -323,7 +323,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         /// <summary>The rig the Unity layer would collect from the demo's T-pose frame: Unity's space under <paramref name="armature"/>.</summary>
-        private static CharacterRig Rig(MotionClip clip, RootFrame armature)
+        internal static CharacterRig Rig(MotionClip clip, RootFrame armature)
         {
             Skeleton s = clip.Skeleton;
             int n = s.JointCount;

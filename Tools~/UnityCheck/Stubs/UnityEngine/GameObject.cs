@@ -11,6 +11,8 @@ namespace UnityEngine
 
         public T GetComponent<T>() => throw null!;
 
+        public T[] GetComponents<T>() => throw null!;
+
         public T AddComponent<T>() where T : Component => throw null!;
     }
 }

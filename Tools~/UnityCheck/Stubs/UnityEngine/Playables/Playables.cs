@@ -5,6 +5,7 @@ namespace UnityEngine.Playables
     // source: unity:Runtime/Export/Director/Playable.cs
     public partial struct Playable : IPlayable
     {
+        public bool Equals(Playable other) => throw null!;
     }
 
     // source: unity:Runtime/Export/Director/PlayableBindings.cs
@@ -95,6 +96,9 @@ namespace UnityEngine.Playables
             where U : struct, IPlayable
             where V : struct, IPlayable => throw null!;
 
+        public void Disconnect<U>(U input, int inputPort)
+            where U : struct, IPlayable => throw null!;
+
         public void DestroyPlayable<U>(U playable)
             where U : struct, IPlayable => throw null!;
     }
@@ -112,6 +116,27 @@ namespace UnityEngine.Playables
             where U : struct, IPlayable => throw null!;
 
         public static void SetSpeed<U>(this U playable, double value)
+            where U : struct, IPlayable => throw null!;
+
+        public static PlayableGraph GetGraph<U>(this U playable)
+            where U : struct, IPlayable => throw null!;
+
+        public static int GetInputCount<U>(this U playable)
+            where U : struct, IPlayable => throw null!;
+
+        public static int GetOutputCount<U>(this U playable)
+            where U : struct, IPlayable => throw null!;
+
+        public static Playable GetInput<U>(this U playable, int inputPort)
+            where U : struct, IPlayable => throw null!;
+
+        public static Playable GetOutput<U>(this U playable, int outputPort)
+            where U : struct, IPlayable => throw null!;
+
+        public static void SetInputWeight<U>(this U playable, int inputIndex, float weight)
+            where U : struct, IPlayable => throw null!;
+
+        public static float GetInputWeight<U>(this U playable, int inputIndex)
             where U : struct, IPlayable => throw null!;
     }
 
