@@ -34,6 +34,7 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _targetRoot = new double[3];
         private readonly double[] _targetRotations;
         private RootFrame _deferredFrame;
+        private Vector3D _controllerVelocity;     // the controller's root velocity last read (world, per second; zero with root motion off)
         private StateTarget _sample;
         private int _sampleId;
         private StateTarget _handOff;
@@ -130,6 +131,9 @@ namespace DeltaInterpolator.Core.Playback
             }
 
             Showed(input.Place, input.ApplyRootMotion, shownPose);
+            // The controller's motion now, in the world: where a deferred target is placed (see PlaceDeferredTarget).
+            var streamVelocity = new Vector3D(input.ControllerVelocityX, input.ControllerVelocityY, input.ControllerVelocityZ);
+            _controllerVelocity = input.ApplyRootMotion ? RootMotionFrame.ToWorld(streamVelocity, RootMotion.CharacterFrame.Rotation) : Vector3D.Zero;
             if (sampledTarget.Length == _poseLength && Player.HasDeferredTransition) StartSampledTarget(sampledTarget);
             // After a sampled target started: a transition the controller starts now defers its own, which the next frame's sample starts.
             if (input.Layers != null && Transitions.Observe(new ReadOnlySpan<AnimatorLayerState>(input.Layers, 0, Math.Min(input.LayerCount, input.Layers.Length)), out StateTarget next))
@@ -143,7 +147,6 @@ namespace DeltaInterpolator.Core.Playback
 
             // The stream's velocity is in a frame the engine does not name: while nothing blended it last frame, what the
             // engine applied in the world says which (RootMotionFrameCheck); the plan works in the world.
-            var streamVelocity = new Vector3D(input.ControllerVelocityX, input.ControllerVelocityY, input.ControllerVelocityZ);
             if (input.ApplyRootMotion && _evaluatedUnblended)
                 output.RootMotionWarning = RootMotionFrame.Observe(streamVelocity, new Vector3D(input.AppliedVelocityX, input.AppliedVelocityY, input.AppliedVelocityZ), _evaluatedRotation);
             QuaternionD rotation = RootMotion.CharacterFrame.Rotation;
@@ -193,13 +196,14 @@ namespace DeltaInterpolator.Core.Playback
 
         /// <summary>
         /// A transition whose target the engine samples later (Unity: a clip through the playable graph); it arrives
-        /// <paramref name="seconds"/> from now, placed where the character stands now (call <see cref="Showed"/> first).
-        /// <see cref="Frame"/> starts it when the sampled target comes.
+        /// <paramref name="seconds"/> from now, placed where the character stands now (call <see cref="Showed"/> first) or, with
+        /// root motion on, where the controller's root velocity now brings it by then (a walking character walks on through it
+        /// rather than being pulled back). <see cref="Frame"/> starts it when the sampled target comes.
         /// </summary>
         public int DeferTransition(double seconds)
         {
             int id = Player.DeferTransition(seconds);
-            _deferredFrame = RootMotion.CharacterFrame;
+            PlaceDeferredTarget(seconds);
             return id;
         }
 
@@ -210,7 +214,7 @@ namespace DeltaInterpolator.Core.Playback
         public int DeferHandOff(double seconds)
         {
             int id = Player.DeferHandOff(seconds);
-            _deferredFrame = RootMotion.CharacterFrame;
+            PlaceDeferredTarget(seconds);
             return id;
         }
 
@@ -257,6 +261,23 @@ namespace DeltaInterpolator.Core.Playback
             output.FailureReason = output.Failed ? _status.Reason : null;
             output.Error = _status.Error;
             return output;
+        }
+
+        // Where a deferred target (a clip's or a state's pose, which the engine samples in place: its root relative to the
+        // character) will stand: with root motion on, the character does not stay where it stands at the request but moves on
+        // with the controller's root motion, so the target is placed where that motion (its velocity now, on the ground) brings
+        // it by the arrival. Placed at the request's spot instead, a walking character would be pulled back to it and stop.
+        private void PlaceDeferredTarget(double seconds)
+        {
+            RootFrame now = RootMotion.CharacterFrame;
+            if (!RootMotion.Enabled)
+            {
+                _deferredFrame = now;
+                return;
+            }
+
+            var ahead = new Vector3D(seconds * _controllerVelocity.X, 0.0, seconds * _controllerVelocity.Z);
+            _deferredFrame = new RootFrame(now.Position + ahead, now.Rotation, now.Scale);
         }
 
         private void StartSampledTarget(ReadOnlySpan<double> sampled)

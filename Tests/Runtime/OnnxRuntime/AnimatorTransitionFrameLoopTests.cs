@@ -80,12 +80,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void AnInterruptionStartsANewInbetweenFromThePoseShown() => Interruption();
 
         // Issue 27's turn bound on an interruption, as written: NOT met, for the reason given at HandOffFrameLoopTests.AHandOffStaysWithinTheTurnBound
-        // (the walking in-between's gait phase is not its references'). Measured worst step: 180 % of the bound (the left foot, 4.5° against 2.5°).
+        // (the walking in-between's gait is faster than its references). Measured worst step: 180 % of the bound (the left foot, 4.5° against
+        // 2.5°), in the SLERP → network ease-in of the new in-between; by phase: reading 90 %, SLERP 47 %, ease-in 180 %, network 145 %,
+        // arrival 67 %, after arrival 78 % (the brisk walk's own knee is exactly straight for 0.12 s there, so its reference turn is 0).
+        // The controller's own crossfade underneath, over the same steps against the same references, reaches 372 % (the right toe).
         [Ignore("issue 27's per-step turn bound is not met yet on an interruption between walks (worst 180 % of the bound); kept so it can be run and fail")]
         [Test]
         public void AnInterruptionStaysWithinTheTurnBound()
         {
             StepBounds bounds = Interruption();
+            TestContext.Out.WriteLine($"  worst turn share by phase: {bounds.WorstByPhase()}");
+            foreach (string step in bounds.Trace) TestContext.Out.WriteLine("    " + step);
             Assert.That(bounds.Failures.Where(f => !f.Contains("root speed")), Is.Empty, string.Join("\n", bounds.Failures.Take(20)) + "\n" + bounds);
         }
 
@@ -116,6 +121,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             var ownBefore = new double[4 * bones];
             brisk.Sample(0.5, 0, out _, ownBefore, out double bx, out double bz);
             bounds.Frame(loop.Time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerpBefore, ownBefore, ownBefore, 0);
+            bool arrived = false;
+            // Diagnostic only: the controller's own crossfade underneath (what the character shows without neural transitions), over the
+            // same steps until the arrival, against the same references.
+            var crossfade = new StepBounds();
+            var controllerRoot = new double[3];
+            var controllerRotations = new double[4 * bones];
+            loop.Controller.Pose(controllerRoot, controllerRotations);
+            crossfade.Frame(loop.Time, controllerRoot, controllerRotations, slerpBefore, slerpBefore, ownBefore, ownBefore, 0);
             void Measure()
             {
                 // SLERP from the pose shown at the interruption to the brisk walk's pose at the crossfade's end; the brisk walk's own motion.
@@ -123,7 +136,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 for (int i = 0; i < slerp.Length; i += 4) Quaternions.Normalize(Quaternions.Slerp(QuaternionD.Read(from, i), QuaternionD.Read(target, i), f)).Write(slerp, i);
                 brisk.Sample(0.5 + (loop.Time - start), 0, out _, own, out double x, out double z);
                 double speed = Math.Sqrt((x - bx) * (x - bx) + (z - bz) * (z - bz)) / loop.Step;
+                bounds.Phase = loop.Player.CurrentRequestId == first ? "reading" : HandOffFrameLoopTests.PhaseOf(loop, loop.Player.CurrentRequestId, arrived, !loop.Player.IsPlaying, start + 0.2);
+                arrived |= !loop.Player.IsPlaying;
                 bounds.Frame(loop.Time, loop.Shown.Root, loop.Shown.Rotations, slerpBefore, slerp, ownBefore, own, speed);
+                loop.Controller.Pose(controllerRoot, controllerRotations);
+                if (!arrived) crossfade.Frame(loop.Time, controllerRoot, controllerRotations, slerpBefore, slerp, ownBefore, own, speed);
                 Array.Copy(slerp, slerpBefore, slerp.Length);
                 Array.Copy(own, ownBefore, own.Length);
                 (bx, bz) = (x, z);
@@ -160,6 +177,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             AssertOwnPoseFromNowOn(loop, brisk, "BriskWalk", Measure);
             TestContext.Out.WriteLine($"interruption into the brisk walk: {bounds}");
+            TestContext.Out.WriteLine($"  the controller's own crossfade, until the arrival against the same references: {crossfade}");
             return bounds;
         }
 

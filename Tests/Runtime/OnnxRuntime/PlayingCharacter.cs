@@ -84,6 +84,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         /// </summary>
         public Action<CharacterFrameOutput>? BeforeController { get; set; }
 
+        /// <summary>
+        /// With root motion on, the controller's root velocity of each evaluation (its own frame, per second), read after it
+        /// evaluates, instead of the constant one given to <see cref="PlayWithRootMotion"/>; null: that constant.
+        /// </summary>
+        public Func<Vector3D>? ControllerVelocity { get; set; }
+
         /// <summary>The last frame's output (its pose buffer is the character's).</summary>
         public CharacterFrameOutput LastFrame { get; private set; }
 
@@ -141,6 +147,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             if (frame.RootMotionWarning != null) RootMotionWarnings.Add(frame.RootMotionWarning);
             BeforeController?.Invoke(frame);
             _controller(Time, _stream.Root, _stream.Rotations);
+            if (ControllerVelocity != null) _controllerVelocity = ControllerVelocity();
             var pose = new ReadOnlySpan<double>(frame.Pose);
             PoseBlend.ApplyMasked(ref _stream, frame.Weight, pose.Slice(0, 3), pose.Slice(3), KeptBones, Shown.Root, Shown.Rotations);
             if (_rootMotion) ApplyRootMotion(frame, deltaTime);

@@ -43,7 +43,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             loop.PlayUntil(1.2);
             Vector3D start = loop.HipsWorld;
             Vector3D target = loop.RequestAhead(Distance, Duration, sampledByTheGraph);
-            Assert.That(Horizontal(target - start).Length, Is.EqualTo(Distance).Within(0.05), "the target stands 2 m ahead of the hips");
+            // A clip's pose sampled under root motion is in place: it stands where the controller's motion brings the character by
+            // the arrival (speed × duration ahead); a pose given to the request stands where it was asked for (2 m ahead).
+            double ahead = sampledByTheGraph && applyRootMotion ? speed * Duration : Distance;
+            Assert.That(Horizontal(target - start).Length, Is.EqualTo(ahead).Within(0.05), "the target stands where it was asked for, or where the walk brings the character");
             double targetTime = loop.Time + Duration;
 
             double lastForward = loop.Forward(loop.HipsWorld);
@@ -202,7 +205,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             /// <paramref name="sampledByTheGraph"/>: as the component requests a clip's pose. The request is deferred
             /// (<see cref="TransitionPlayer.DeferTransition"/>) with where the character stands now; the next
             /// evaluation samples the clip through the playable graph (the job reads its input stream), and the
-            /// Update after it completes the request in the root-motion space of the request's frame.
+            /// Update after it completes the request in the root-motion space of the request's frame. With root motion on the
+            /// engine samples the pose in place (its hips where the controller's are now, in the character), and the character
+            /// places it where the controller's velocity brings it by the arrival (<paramref name="metres"/> does not apply).
             /// </remarks>
             public Vector3D RequestAhead(double metres, double seconds, bool sampledByTheGraph = false)
             {
@@ -210,9 +215,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                 var rotations = new double[4 * _humanoid.BoneCount];
                 Controller(Time + 0.37, root, rotations);
                 Vector3D shownInCharacter = _humanoid.Armature.PointToParent(Vector3D.Read(_shown, 0));
-                Vector3D targetInCharacter = new Vector3D(shownInCharacter.X, _hipsHeight, shownInCharacter.Z + metres / Character.Scale);
+                bool inPlace = sampledByTheGraph && _rootMotionOn;
+                Vector3D targetInCharacter = new Vector3D(shownInCharacter.X, _hipsHeight, shownInCharacter.Z + (inPlace ? 0 : metres / Character.Scale));
                 _humanoid.Armature.PointFromParent(targetInCharacter).Write(root, 0);
-                Vector3D world = Character.Then(_humanoid.Armature).PointToParent(Vector3D.Read(root, 0));
+                RootFrame arrivalPlace = inPlace ? new RootFrame(Character.Position + seconds * _speed * Quaternions.Apply(Character.Rotation, Vector3D.UnitZ), Character.Rotation, Character.Scale) : Character;
+                Vector3D world = arrivalPlace.Then(_humanoid.Armature).PointToParent(Vector3D.Read(root, 0));
                 // As the component does: the pose shown and where the character stands now, then the request.
                 _character.Showed(Place(Character), _rootMotionOn, _shown);
                 if (sampledByTheGraph)

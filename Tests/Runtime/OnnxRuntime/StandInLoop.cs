@@ -4,6 +4,7 @@ using System.IO;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Playback;
+using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.OnnxRuntime;
 using DeltaInterpolator.Tests.Playback;
@@ -44,6 +45,20 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Character.BeforeController = Instructions;
             Player.TransitionCompleted += e => Completions.Add(e);
         }
+
+        /// <summary>
+        /// Root motion on from the next frame: the controller keeps the root bone in place and its travel moves the character (standing
+        /// at the world's origin, unrotated), by the velocity of each evaluation, applied in the character's frame.
+        /// </summary>
+        public void PlayWithRootMotion()
+        {
+            Controller.RootMotion = true;
+            Character.PlayWithRootMotion(RootFrame.Identity, Vector3D.Zero, RootVelocityFrame.Local);
+            Character.ControllerVelocity = () => new Vector3D(Controller.VelocityX, 0, Controller.VelocityZ);
+        }
+
+        /// <summary>The root bone's position in the world (where the character stands, plus the shown root bone in it).</summary>
+        public Vector3D RootWorld => Character.Place.PointToParent(new Vector3D(Shown.Root[0], Shown.Root[1], Shown.Root[2]));
 
         /// <summary>The character's bones ↔ the model's joints (the model's skeleton in Unity's space, metres).</summary>
         public NamePoseConverter Converter { get; }

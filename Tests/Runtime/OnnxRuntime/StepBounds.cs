@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Tests.OnnxRuntime
@@ -19,6 +20,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private double[]? _previousRoot;
         private double _previousTime;
         private double _previousSpeed = double.NaN;
+        private readonly Dictionary<string, (double Share, int Steps)> _worstByPhase = new Dictionary<string, (double, int)>();
+        private readonly List<string> _phases = new List<string>();
 
         /// <summary>The worst turn as a share of its bound (≤ 1 passes), and where.</summary>
         public double WorstTurnShare { get; private set; }
@@ -31,6 +34,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         /// <summary>Where <see cref="WorstSpeedShare"/> happened.</summary>
         public string WorstSpeedAt { get; private set; } = "";
+
+        /// <summary>What the runtime shows in the next steps (e.g. "SLERP", "ease-in", "network", "arrival"), set by the test before <see cref="Frame"/>, for <see cref="Trace"/> and <see cref="WorstByPhase"/>.</summary>
+        public string Phase { get; set; } = "";
+
+        /// <summary>Per step: its phase, time, the worst joint's turn as a share of its bound, which joint, its turn and its references' turns (for reports).</summary>
+        public List<string> Trace { get; } = new List<string>();
 
         /// <summary>Steps checked.</summary>
         public int Steps { get; private set; }
@@ -48,6 +57,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             if (_previousRotations != null && _previousRoot != null)
             {
                 double dt = time - _previousTime;
+                double stepShare = 0;
+                string stepAt = "";
                 for (int i = 0; i < rotations.Length; i += 4)
                 {
                     double turn = Degrees(QuaternionD.Read(_previousRotations, i), QuaternionD.Read(rotations, i));
@@ -58,6 +69,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     {
                         WorstTurnShare = turn / bound;
                         WorstTurnAt = $"t = {time:F4} s, bone {i / 4}: {turn:F3}° (SLERP {slerp:F3}°, own {own:F3}°, bound {bound:F3}°)";
+                    }
+
+                    if (turn / bound > stepShare)
+                    {
+                        stepShare = turn / bound;
+                        stepAt = $"bone {i / 4,2} {turn,6:F3}° (SLERP {slerp:F3}°, own {own:F3}°)";
                     }
 
                     if (turn > bound) Failures.Add($"t = {time:F4} s, bone {i / 4} turned {turn:F3}° > {bound:F3}° (SLERP {slerp:F3}°, own {own:F3}°)");
@@ -77,6 +94,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     if (change > bound) Failures.Add($"t = {time:F4} s, root speed {_previousSpeed:F3} → {speed:F3} m/s, change > {bound:F3} m/s (own {ownSpeed:F3} m/s)");
                 }
 
+                Trace.Add($"t = {time:F4} s {Phase,-14} {stepShare,5:P0} {stepAt}");
+                if (!_worstByPhase.TryGetValue(Phase, out (double Share, int Steps) worst)) _phases.Add(Phase);
+                _worstByPhase[Phase] = (Math.Max(worst.Share, stepShare), worst.Steps + 1);
                 _previousSpeed = speed;
                 Steps++;
             }
@@ -85,6 +105,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             _previousRoot = (double[])root.Clone();
             _previousTime = time;
         }
+
+        /// <summary>The worst turn share in each phase, in the order the phases came (e.g. "SLERP 68 % (1), ease-in 238 % (2), …").</summary>
+        public string WorstByPhase() => string.Join(", ", _phases.Select(p => $"{(p.Length == 0 ? "-" : p)} {_worstByPhase[p].Share:P0} ({_worstByPhase[p].Steps} steps)"));
 
         /// <summary>The worst margins, for the test's output.</summary>
         public override string ToString() => $"{Steps} steps; worst turn {WorstTurnShare:P0} of its bound at {WorstTurnAt}; worst root speed change {WorstSpeedShare:P0} of its bound at {WorstSpeedAt}";

@@ -40,6 +40,19 @@ namespace DeltaInterpolator.Tests.Playback
         /// <inheritdoc cref="TravelX"/>
         public double TravelZ { get; private set; }
 
+        /// <summary>
+        /// Root motion on (Unity: <c>Animator.applyRootMotion</c>): the travel on the ground moves the character, not the root bone,
+        /// which stays in place (x = z = 0) in the pose and in off-scene samples, as a Unity rig's root bone does under root motion;
+        /// the travel comes out as <see cref="VelocityX"/>, <see cref="VelocityZ"/>.
+        /// </summary>
+        public bool RootMotion { get; set; }
+
+        /// <summary>The root's travel per second over the last advance (x, z; the character's frame): the root motion the engine applies.</summary>
+        public double VelocityX { get; private set; }
+
+        /// <inheritdoc cref="VelocityX"/>
+        public double VelocityZ { get; private set; }
+
         /// <summary>The layers.</summary>
         public StandInLayer Layer(int index) => _layers[index];
 
@@ -86,9 +99,9 @@ namespace DeltaInterpolator.Tests.Playback
         public void Pose(Span<double> root, Span<double> rotations)
         {
             _layers[0].Evaluate(Parameter, out double height, rotations);
-            root[0] = TravelX;
+            root[0] = RootMotion ? 0 : TravelX;
             root[1] = height;
-            root[2] = TravelZ;
+            root[2] = RootMotion ? 0 : TravelZ;
             for (int l = 1; l < _layers.Length; l++)
             {
                 bool[]? mask = _layers[l].Mask;
@@ -135,9 +148,11 @@ namespace DeltaInterpolator.Tests.Playback
 
             Restore();
             target.Sample(state.Seconds, Parameter, out double height, rotations, out _, out _);
-            root[0] = x;
+            // Under root motion the engine reads the pose in place: the root bone relative to the character (the glue cannot run
+            // the controller ahead; Core places it, see TransitionCharacter.DeferTransition).
+            root[0] = RootMotion ? 0 : x;
             root[1] = height;
-            root[2] = z;
+            root[2] = RootMotion ? 0 : z;
         }
 
         private void Advance(double dt)
@@ -146,6 +161,8 @@ namespace DeltaInterpolator.Tests.Playback
             for (int l = 1; l < _layers.Length; l++) _layers[l].Advance(dt, Parameter);
             TravelX += dx;
             TravelZ += dz;
+            VelocityX = dx / dt;
+            VelocityZ = dz / dt;
         }
 
         // The base layer's travel over dt on a copy of its state machine (saved once, restored by Restore).
