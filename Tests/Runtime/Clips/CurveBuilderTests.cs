@@ -15,19 +15,20 @@ namespace DeltaInterpolator.Tests.Clips
     {
         private static Skeleton Chain() => new Skeleton(new[] { "Hips", "Spine", "Head" }, new[] { -1, 0, 1 }, new double[] { 0, 90, 0, 0, 10, 0, 0, 20, 0 });
 
-        private static readonly string?[] Paths = { "Hips", "Hips/Spine", "Hips/Spine/Head" };
+        private static readonly string[] Paths = { "Hips", "Hips/Spine", "Hips/Spine/Head" };
 
         // The chain as a character: its armature holds the bones in metres under a centimetre skeleton (scale 100), no
         // turn, so a root position in Unity metres lands in the skeleton's centimetres; the reference pose is identity.
-        private static CharacterPoseTrack Track(int frameCount)
+        private static CharacterRig Rig()
         {
             Skeleton chain = Chain();
             var rotations = new double[12];
             for (int b = 0; b < 3; b++) rotations[4 * b] = 1;
-            var rig = new CharacterRig("chain", chain.Names, chain.Parents, new double[] { 0, 0.9, 0, 0, 0.1, 0, 0, 0.2, 0 }, rotations,
+            return new CharacterRig("chain", chain.Names, chain.Parents, new double[] { 0, 0.9, 0, 0, 0.1, 0, 0, 0.2, 0 }, rotations,
                 new RootFrame(Vector3D.Zero, QuaternionD.Identity, 100));
-            return new CharacterPoseTrack(rig, frameCount, 1.0 / 30);
         }
+
+        private static CharacterPoseTrack Track(int frameCount) => new CharacterPoseTrack(Rig(), frameCount, 1.0 / 30);
 
         // A pose as Unity's transforms give it: rotations in Unity's (x, y, z, w) order, turned into the track's (w, x, y, z).
         private static void SetUnityPose(CharacterPoseTrack track, int frame, float[] localRotationsXyzw, float rootX, float rootY, float rootZ)
@@ -86,7 +87,7 @@ namespace DeltaInterpolator.Tests.Clips
                 SetUnityPose(track, f, pose, 0.1f * f, 0.9f, -0.2f * f);
             }
 
-            IReadOnlyList<ClipCurve> curves = CurveBuilder.Build(track.Motion, Paths, 0.01);
+            IReadOnlyList<ClipCurve> curves = CurveBuilder.BuildCharacter(track.Rig, track.Motion, Paths);
 
             Assert.That(curves.Count, Is.EqualTo(3 * 4 + 3));
             for (int j = 0; j < 3; j++)
@@ -126,7 +127,7 @@ namespace DeltaInterpolator.Tests.Clips
                 q.Write(motion.LocalRotations, motion.RotationIndex(f, 1));
             }
 
-            IReadOnlyList<ClipCurve> curves = CurveBuilder.Build(motion, Paths, 0.01);
+            IReadOnlyList<ClipCurve> curves = CurveBuilder.BuildCharacter(Rig(), motion, Paths);
             ClipCurve[] spine = curves.Where(c => c.Path == "Hips/Spine").ToArray();
             for (int f = 1; f < 37; f++)
             {
@@ -169,7 +170,7 @@ namespace DeltaInterpolator.Tests.Clips
                 Array.Copy(transition.RootPositions, k * 3, m.LocalPositions, m.PositionIndex(k + 1, 0), 3);
             }
 
-            IReadOnlyList<ClipCurve> curves = CurveBuilder.Build(m, Paths, 0.01);
+            IReadOnlyList<ClipCurve> curves = CurveBuilder.BuildCharacter(track.Rig, m, Paths);
             ClipCurve hipsY = curves.Single(cv => cv.Path == "Hips" && cv.Property == "m_LocalRotation.y");
             ClipCurve hipsX = curves.Single(cv => cv.Path == "Hips" && cv.Property == "m_LocalPosition.x");
             for (int f = 0; f <= 10; f++)
