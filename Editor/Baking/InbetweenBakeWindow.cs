@@ -1,4 +1,5 @@
 #nullable enable
+using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
@@ -359,12 +360,12 @@ namespace DeltaInterpolator.Editor.Baking
         }
 
         /// <summary>One bar over the whole bake: sampling, then every method's gaps (<see cref="InbetweenBake"/>'s reports, on this thread), then writing.</summary>
-        private sealed class ProgressBar : IProgress<BakeProgress>
+        private sealed class ProgressBar : IProgress<StageProgress>
         {
             public void Show(string info, float progress) => EditorUtility.DisplayProgressBar("In-between Baker", info, progress);
 
-            public void Report(BakeProgress value) =>
-                Show($"{value.Method}: {value.GapsDone} of {value.GapsTotal} gaps filled", 0.1f + 0.8f * value.GapsDone / Math.Max(1, value.GapsTotal));
+            public void Report(StageProgress value) =>
+                Show($"{value.Stage}: {value.Completed} of {value.Total} gaps filled", 0.1f + 0.8f * value.Completed / Math.Max(1, value.Total));
         }
     }
 }

@@ -2,7 +2,6 @@ using System;
 using Unity.Collections;
 using UnityEngine;
 using UnityEngine.Animations;
-using UnityEngine.Experimental.Animations;
 using UnityEngine.Playables;
 
 namespace DeltaInterpolator.Unity

@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using DeltaInterpolator.Core.Blends;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Inference;
-using Unity.Collections;
 using UnityEngine;
 using UnityEngine.Animations;
 using UnityEngine.Playables;
@@ -43,10 +42,7 @@ namespace DeltaInterpolator.Unity
         private readonly CharacterRig _rig;
         private readonly Transform[] _bones;
         private readonly BlendModel _model;
-        private NativeArray<TransformStreamHandle> _handles;
-        private NativeArray<double> _pose;
-        private NativeArray<double> _shown;
-        private NativeArray<double> _weight;
+        private readonly PoseBlendBuffers _buffers;
         private readonly double[] _sample;
         private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
         private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
@@ -57,13 +53,8 @@ namespace DeltaInterpolator.Unity
             _rig = rig;
             _bones = bones;
             _model = model;
-            int n = bones.Length;
-            _handles = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
-            for (int b = 0; b < n; b++) _handles[b] = animator.BindStreamTransform(bones[b]);
-            _pose = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
-            _shown = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
-            _weight = new NativeArray<double>(1, Allocator.Persistent);
-            _sample = new double[3 + 4 * n];
+            _buffers = new PoseBlendBuffers(animator, bones);
+            _sample = new double[3 + 4 * bones.Length];
         }
 
         /// <summary>
@@ -137,7 +128,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>The mixer: an animation job with <paramref name="inputCount"/> inputs, mixed by their weights (Timeline sets them) before the blend pose is laid over.</summary>
         public AnimationScriptPlayable CreatePlayable(PlayableGraph graph, int inputCount)
         {
-            var job = new TrackBlendJob { Bones = _handles, Pose = _pose, Shown = _shown, Weight = _weight };
+            var job = new TrackBlendJob { Bones = _buffers.Bones, Pose = _buffers.Pose, Shown = _buffers.Shown, Weight = _buffers.Weight };
             AnimationScriptPlayable playable = AnimationScriptPlayable.Create(graph, job, inputCount);
             playable.SetProcessInputs(true);
             return playable;
@@ -153,21 +144,15 @@ namespace DeltaInterpolator.Unity
             BlendFrames? frames = moment.Kind == TrackMomentKind.Span ? _blends[moment.Span] : null;
             if (frames == null || !frames.Sample(moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3)))
             {
-                _weight[0] = 0;
+                _buffers.Weight[0] = 0;
                 return;
             }
 
-            _sample.AsSpan().CopyTo(_pose.AsSpan());
-            _weight[0] = 1;
+            _sample.AsSpan().CopyTo(_buffers.Pose.AsSpan());
+            _buffers.Weight[0] = 1;
         }
 
         /// <summary>Frees the job's buffers (the graph owns the playable).</summary>
-        public void Dispose()
-        {
-            if (_handles.IsCreated) _handles.Dispose();
-            if (_pose.IsCreated) _pose.Dispose();
-            if (_shown.IsCreated) _shown.Dispose();
-            if (_weight.IsCreated) _weight.Dispose();
-        }
+        public void Dispose() => _buffers.Dispose();
     }
 }

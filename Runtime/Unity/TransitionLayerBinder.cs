@@ -18,10 +18,7 @@ namespace DeltaInterpolator.Unity
     /// </summary>
     internal sealed class TransitionLayerBinder : IDisposable
     {
-        private NativeArray<TransformStreamHandle> _bones;
-        private NativeArray<double> _pose;
-        private NativeArray<double> _shown;
-        private NativeArray<double> _weight;
+        private readonly PoseBlendBuffers _buffers;
         // [0..2] the transition's root velocity (main thread → job), [3..5] the controller's (job → main thread), [6] 1 with root motion on.
         private NativeArray<double> _rootVelocity;
         // One flag per bone: true where a masked controller layer above drives the bone (it keeps the controller's pose); empty: no mask.
@@ -47,19 +44,14 @@ namespace DeltaInterpolator.Unity
             _watcher = watcher;
             const int rootBone = 0;
             double[] initialPose = UnityPoses.Read(bones, rootBone);
-            int n = bones.Length;
-            _bones = new NativeArray<TransformStreamHandle>(n, Allocator.Persistent);
-            for (int b = 0; b < n; b++) _bones[b] = animator.BindStreamTransform(bones[b]);
-            _pose = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
-            _shown = new NativeArray<double>(3 + 4 * n, Allocator.Persistent);
-            _weight = new NativeArray<double>(1, Allocator.Persistent);
+            _buffers = new PoseBlendBuffers(animator, bones);
             _rootVelocity = new NativeArray<double>(7, Allocator.Persistent);
             bool[]? kept = watcher.KeptBones;
             _keptBones = new NativeArray<bool>(kept?.Length ?? 0, Allocator.Persistent);
             for (int b = 0; kept != null && b < kept.Length; b++) _keptBones[b] = kept[b];
             // Until the job has run once (it does not while the Animator is culled), the pose shown is the bones' own, never zeros.
-            initialPose.CopyTo(_shown.AsSpan());
-            var job = new TransitionLayerJob { Bones = _bones, Pose = _pose, Shown = _shown, Weight = _weight, RootVelocity = _rootVelocity, KeptBones = _keptBones, RootBone = rootBone };
+            initialPose.CopyTo(_buffers.Shown.AsSpan());
+            var job = new TransitionLayerJob { Bones = _buffers.Bones, Pose = _buffers.Pose, Shown = _buffers.Shown, Weight = _buffers.Weight, RootVelocity = _rootVelocity, KeptBones = _keptBones, RootBone = rootBone };
             _graph = PlayableGraph.Create(graphName);
             _graph.SetTimeUpdateMode(DirectorUpdateMode.GameTime);
             AnimationPlayableOutput output = AnimationPlayableOutput.Create(_graph, "Δ-Interpolator", animator);
@@ -69,9 +61,9 @@ namespace DeltaInterpolator.Unity
             output.SetAnimationStreamSource(AnimationStreamSource.PreviousInputs);
             output.SetSortingOrder(sortingOrder);
             // Clip targets are read by a pass-through layer just before this one.
-            Sampler = new ClipTargetSampler(_graph, animator, bones, _bones, rootBone, (ushort)(sortingOrder - 1));
+            Sampler = new ClipTargetSampler(_graph, animator, bones, _buffers.Bones, rootBone, (ushort)(sortingOrder - 1));
             // Animator state targets (hand-offs, neural Animator transitions) by a controller copy's reader just before that.
-            States = new StateTargetSampler(_graph, animator, _bones, rootBone, (ushort)(sortingOrder - 2));
+            States = new StateTargetSampler(_graph, animator, _buffers.Bones, rootBone, (ushort)(sortingOrder - 2));
             _graph.Play();
         }
 
@@ -99,7 +91,7 @@ namespace DeltaInterpolator.Unity
         }
 
         /// <summary>The pose the job showed last.</summary>
-        public ReadOnlySpan<double> Shown => _shown.AsReadOnlySpan();
+        public ReadOnlySpan<double> Shown => _buffers.Shown.AsReadOnlySpan();
 
         /// <summary>
         /// What Unity read for this frame callback: its clock, where the character stands, the controller's root velocity the job
@@ -167,12 +159,12 @@ namespace DeltaInterpolator.Unity
         private void Write(in CharacterFrameOutput frame)
         {
             if (frame.RootMotionWarning != null) Debug.LogWarning(_animator.name + ": " + frame.RootMotionWarning, _animator);
-            new ReadOnlySpan<double>(frame.Pose).CopyTo(_pose.AsSpan());
+            new ReadOnlySpan<double>(frame.Pose).CopyTo(_buffers.Pose.AsSpan());
             _rootVelocity[0] = frame.RootVelocityX;
             _rootVelocity[1] = frame.RootVelocityY;
             _rootVelocity[2] = frame.RootVelocityZ;
             _rootVelocity[6] = frame.RootMotion ? 1 : 0;
-            _weight[0] = frame.Weight;
+            _buffers.Weight[0] = frame.Weight;
         }
 
         public void Dispose()
@@ -181,10 +173,7 @@ namespace DeltaInterpolator.Unity
             Sampler.Dispose();
             States.Dispose();
             if (_keptBones.IsCreated) _keptBones.Dispose();
-            if (_bones.IsCreated) _bones.Dispose();
-            if (_pose.IsCreated) _pose.Dispose();
-            if (_shown.IsCreated) _shown.Dispose();
-            if (_weight.IsCreated) _weight.Dispose();
+            _buffers.Dispose();
             if (_rootVelocity.IsCreated) _rootVelocity.Dispose();
         }
     }

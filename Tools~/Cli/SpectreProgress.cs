@@ -1,16 +1,16 @@
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Evaluation.Benchmark;
+using DeltaInterpolator.Core;
 using Spectre.Console;
 
 namespace DeltaInterpolator.Cli
 {
     /// <summary>
-    /// Shows Core's <see cref="BenchmarkProgress"/> reports as Spectre.Console progress bars, one bar per
+    /// Shows Core's <see cref="StageProgress"/> reports as Spectre.Console progress bars, one bar per
     /// stage. Reports may come from worker threads (parallel file reading), so access is locked; unlike
     /// <see cref="Progress{T}"/> it updates synchronously.
     /// </summary>
-    public sealed class SpectreProgress : IProgress<BenchmarkProgress>
+    public sealed class SpectreProgress : IProgress<StageProgress>
     {
         private readonly ProgressContext _context;
         private readonly Dictionary<string, ProgressTask> _tasks = new Dictionary<string, ProgressTask>();
@@ -22,7 +22,7 @@ namespace DeltaInterpolator.Cli
         }
 
         /// <inheritdoc />
-        public void Report(BenchmarkProgress value)
+        public void Report(StageProgress value)
         {
             lock (_gate)
             {

@@ -1,7 +1,6 @@
 using System;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Clips;
-using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Blends
@@ -9,22 +8,20 @@ namespace DeltaInterpolator.Core.Blends
     /// <summary>
     /// A blend's frames once computed (<see cref="BlendCache.Get"/>): the character's poses from the first clip's
     /// pose at the span's start to the second clip's at its end, one per model frame, read at any point of the span by
-    /// <see cref="Sample"/> — SLERP and LERP between the two model frames around it, as a bake is read back onto a rig
-    /// (<see cref="MotionResampler.Sample"/>). Reading allocates nothing and never runs the network.
+    /// <see cref="Sample"/> — SLERP and LERP between the two model frames around it, as a clip on the rig is read
+    /// (<see cref="MotionClipPoses"/>). Reading allocates nothing and never runs the network.
     /// </summary>
     public sealed class BlendFrames
     {
-        private readonly CharacterRig _rig;
         private readonly MotionClip? _frames;
-        private readonly MotionClip _scratch;
+        private readonly MotionClipPoses? _poses;
 
         internal BlendFrames(BlendMode mode, CharacterRig rig, MotionClip? frames, string? warning)
         {
             Mode = mode;
-            _rig = rig;
             _frames = frames;
+            _poses = frames == null ? null : new MotionClipPoses(rig.Name, rig, frames);
             Warning = warning;
-            _scratch = MotionClip.CreateRestPose(rig.Skeleton, 1, frames?.FrameTime ?? 1);
         }
 
         /// <summary>Model, SLERP, or Timeline's crossfade (then there are no frames: <see cref="Sample"/> returns false).</summary>
@@ -45,11 +42,10 @@ namespace DeltaInterpolator.Core.Blends
         /// </summary>
         public bool Sample(double fraction, Span<double> rootPosition, Span<double> localRotations)
         {
-            if (_frames == null) return false;
+            if (_frames == null || _poses == null) return false;
             if (!(fraction > 0)) fraction = 0;
             if (fraction > 1) fraction = 1;
-            MotionResampler.Sample(_frames, fraction * (_frames.FrameCount - 1), _scratch.LocalPositions, _scratch.LocalRotations);
-            CharacterPoseTrack.ReadUnityPose(_rig, _scratch, 0, rootPosition, localRotations);
+            _poses.SampleFrame(fraction * (_frames.FrameCount - 1), rootPosition, localRotations);
             return true;
         }
     }

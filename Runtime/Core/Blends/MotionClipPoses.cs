@@ -40,9 +40,12 @@ namespace DeltaInterpolator.Core.Blends
         public double Length => (_motion.FrameCount - 1) * _motion.FrameTime;
 
         /// <inheritdoc />
-        public void Sample(double time, Span<double> rootPosition, Span<double> localRotations)
+        public void Sample(double time, Span<double> rootPosition, Span<double> localRotations) => SampleFrame(time / _motion.FrameTime, rootPosition, localRotations);
+
+        /// <summary>The pose at frame <paramref name="frame"/> (fractional: SLERP and LERP between the frames around it) as Unity's transforms take it.</summary>
+        internal void SampleFrame(double frame, Span<double> rootPosition, Span<double> localRotations)
         {
-            MotionResampler.Sample(_motion, time / _motion.FrameTime, _frame.LocalPositions, _frame.LocalRotations);
+            MotionResampler.Sample(_motion, frame, _frame.LocalPositions, _frame.LocalRotations);
             CharacterPoseTrack.ReadUnityPose(_rig, _frame, 0, rootPosition, localRotations);
         }
     }

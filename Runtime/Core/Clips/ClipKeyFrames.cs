@@ -35,18 +35,21 @@ namespace DeltaInterpolator.Core.Clips
         public int IgnoredKeys { get; }
 
         /// <summary>Number of gaps with missing frames between consecutive keys.</summary>
-        public int GapCount
-        {
-            get
-            {
-                int n = 0;
-                for (int i = 1; i < Frames.Count; i++)
-                {
-                    if (Frames[i] - Frames[i - 1] > 1) n++;
-                }
+        public int GapCount => CountGaps(Frames);
 
-                return n;
+        /// <summary>
+        /// Number of gaps with missing frames between consecutive keys of <paramref name="frames"/> (ascending frame
+        /// indices): the one count the key readers, the key fill's plan and its "nothing to fill" refusal share.
+        /// </summary>
+        internal static int CountGaps(IReadOnlyList<int> frames)
+        {
+            int n = 0;
+            for (int i = 1; i < frames.Count; i++)
+            {
+                if (frames[i] - frames[i - 1] > 1) n++;
             }
+
+            return n;
         }
 
         /// <summary>The missing-frame count of gap <paramref name="index"/> (0-based, in order).</summary>

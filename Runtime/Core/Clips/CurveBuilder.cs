@@ -1,17 +1,16 @@
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Clips
 {
     /// <summary>
-    /// Turns baked model-space motion into the float curves of a Unity clip: per bone the local rotation
+    /// Turns baked motion on a character's skeleton into the float curves of a Unity clip: per bone the local rotation
     /// as four quaternion curves (<c>m_LocalRotation.x/y/z/w</c>, Unity order) and for the root also the
-    /// local position (<c>m_LocalPosition.x/y/z</c>, metres), one key per frame with linear tangents,
-    /// converted to Unity's space through <see cref="Handedness"/>.
+    /// local position (<c>m_LocalPosition.x/y/z</c>), one key per frame with linear tangents, as Unity's transforms
+    /// take them (<see cref="CharacterPoseTrack.ReadUnityPose"/>: Unity's space, the rig's armature and units).
     /// </summary>
     public static class CurveBuilder
     {
@@ -20,68 +19,6 @@ namespace DeltaInterpolator.Core.Clips
 
         /// <summary>Property names of the root position curves.</summary>
         public static readonly IReadOnlyList<string> PositionProperties = new[] { "m_LocalPosition.x", "m_LocalPosition.y", "m_LocalPosition.z" };
-
-        /// <summary>
-        /// Builds the curves of <paramref name="motion"/>.
-        /// </summary>
-        /// <param name="motion">Model-space motion (e.g. a baker's output), data units.</param>
-        /// <param name="bonePaths">Each joint's transform path under the character (null: the joint has no bone and gets no curve).</param>
-        /// <param name="metresPerDataUnit">Unity metres per data unit (the contract's unit scale).</param>
-        /// <returns>Rotation curves of every mapped joint in joint order, then the root's position curves.</returns>
-        public static IReadOnlyList<ClipCurve> Build(MotionClip motion, IReadOnlyList<string?> bonePaths, double metresPerDataUnit)
-        {
-            if (motion == null) throw new ArgumentNullException(nameof(motion));
-            if (bonePaths == null) throw new ArgumentNullException(nameof(bonePaths));
-            int jc = motion.Skeleton.JointCount;
-            if (bonePaths.Count != jc) throw new ArgumentException($"expected one path per joint ({jc}), got {bonePaths.Count}", nameof(bonePaths));
-            if (!(metresPerDataUnit > 0) || double.IsInfinity(metresPerDataUnit)) throw new ArgumentOutOfRangeException(nameof(metresPerDataUnit), "the unit scale must be a positive number");
-
-            int frames = motion.FrameCount;
-            var times = new float[frames];
-            for (int f = 0; f < frames; f++) times[f] = (float)(f * motion.FrameTime);
-
-            var curves = new List<ClipCurve>();
-            for (int j = 0; j < jc; j++)
-            {
-                string? path = bonePaths[j];
-                if (path == null) continue;
-                var components = new float[4][];
-                for (int c = 0; c < 4; c++) components[c] = new float[frames];
-                QuaternionD previous = QuaternionD.Identity;
-                for (int f = 0; f < frames; f++)
-                {
-                    QuaternionD q = Handedness.RotationToUnity(Quaternions.Normalize(QuaternionD.Read(motion.LocalRotations, motion.RotationIndex(f, j))));
-                    // q and −q are the same rotation, but curves interpolate components: keep each key in
-                    // the hemisphere of the previous one so the clip never spins the long way round.
-                    if (f > 0 && q.W * previous.W + q.X * previous.X + q.Y * previous.Y + q.Z * previous.Z < 0) q = q.Negated;
-                    components[0][f] = (float)q.X;
-                    components[1][f] = (float)q.Y;
-                    components[2][f] = (float)q.Z;
-                    components[3][f] = (float)q.W;
-                    previous = q;
-                }
-
-                for (int c = 0; c < 4; c++) curves.Add(ClipCurve.Create(path, RotationProperties[c], (float[])times.Clone(), components[c]));
-            }
-
-            string? rootPath = bonePaths[0];
-            if (rootPath != null)
-            {
-                var xyz = new float[3][];
-                for (int c = 0; c < 3; c++) xyz[c] = new float[frames];
-                for (int f = 0; f < frames; f++)
-                {
-                    Vector3D p = Handedness.PositionToUnity(metresPerDataUnit * Vector3D.Read(motion.LocalPositions, motion.PositionIndex(f, 0)));
-                    xyz[0][f] = (float)p.X;
-                    xyz[1][f] = (float)p.Y;
-                    xyz[2][f] = (float)p.Z;
-                }
-
-                for (int c = 0; c < 3; c++) curves.Add(ClipCurve.Create(rootPath, PositionProperties[c], (float[])times.Clone(), xyz[c]));
-            }
-
-            return curves;
-        }
 
         /// <summary>
         /// The curves of a generic clip from motion on a character's skeleton (e.g. <see cref="Workflows.MethodBake.OnRig"/>

@@ -128,9 +128,7 @@ namespace DeltaInterpolator.Core.Clips
             }
 
             int[] keyFrames = frames.ToArray();
-            bool gap = false;
-            for (int i = 1; i < keyFrames.Length; i++) gap |= keyFrames[i] - keyFrames[i - 1] > 1;
-            if (!gap)
+            if (ClipKeyFrames.CountGaps(keyFrames) == 0)
             {
                 throw new KeyFillException(clip, Invariant($"no frame lies between the keys{(range == null ? "" : " of the range")} at the model's {frameRate:0.##} fps"),
                     "expected two keys at least two model frames apart (a gap to fill)", range == null ? nameof(curves) : nameof(range));

@@ -54,19 +54,7 @@ namespace DeltaInterpolator.Core.Clips
         public int LastKey => KeyFrameArray[KeyFrameArray.Length - 1];
 
         /// <summary>Gaps (consecutive keys with frames between them).</summary>
-        public int GapCount
-        {
-            get
-            {
-                int n = 0;
-                for (int i = 1; i < KeyFrameArray.Length; i++)
-                {
-                    if (KeyFrameArray[i] - KeyFrameArray[i - 1] > 1) n++;
-                }
-
-                return n;
-            }
-        }
+        public int GapCount => ClipKeyFrames.CountGaps(KeyFrameArray);
 
         /// <summary>Model frames between the keys (what the model fills).</summary>
         public int MissingFrames => LastKey - FirstKey + 1 - KeyFrameArray.Length;

@@ -45,7 +45,7 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="maxBoneDeviationDegrees">As for <see cref="Retargeting"/> (the component's default).</param>
         /// <exception cref="KeyLayoutException">Too few keys, or a gap the model cannot take.</exception>
         /// <exception cref="JointMapException">The character cannot be mapped onto the model.</exception>
-        public static BakeRun Run(ModelContract contract, CharacterPoseTrack track, JointMap? jointMap, IReadOnlyList<BakeMethod> methods, IProgress<BakeProgress>? progress = null,
+        public static BakeRun Run(ModelContract contract, CharacterPoseTrack track, JointMap? jointMap, IReadOnlyList<BakeMethod> methods, IProgress<StageProgress>? progress = null,
             double maxBoneDeviationDegrees = CharacterRig.DefaultMaxBoneDeviationDegrees)
         {
             if (track == null) throw new ArgumentNullException(nameof(track));

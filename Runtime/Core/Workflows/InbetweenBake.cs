@@ -33,7 +33,7 @@ namespace DeltaInterpolator.Core.Workflows
         /// <param name="methods">What fills the gaps, in order; at least one.</param>
         /// <param name="progress">Gaps filled over every method, or null.</param>
         /// <exception cref="KeyLayoutException">The keys do not work (too few, out of range, a gap the graph cannot take).</exception>
-        public static BakeRun Run(MotionClip rigClip, int[] rigKeys, IRigRetargeting rig, IReadOnlyList<BakeMethod> methods, IProgress<BakeProgress>? progress = null)
+        public static BakeRun Run(MotionClip rigClip, int[] rigKeys, IRigRetargeting rig, IReadOnlyList<BakeMethod> methods, IProgress<StageProgress>? progress = null)
         {
             if (rigClip == null) throw new ArgumentNullException(nameof(rigClip));
             if (rigKeys == null) throw new ArgumentNullException(nameof(rigKeys));
@@ -106,12 +106,12 @@ namespace DeltaInterpolator.Core.Workflows
         /// <summary>One method's gap count → progress over every method.</summary>
         private sealed class GapCounter : IProgress<int>
         {
-            private readonly IProgress<BakeProgress> _progress;
+            private readonly IProgress<StageProgress> _progress;
             private readonly string _method;
             private readonly int _before;
             private readonly int _total;
 
-            public GapCounter(IProgress<BakeProgress> progress, string method, int before, int total)
+            public GapCounter(IProgress<StageProgress> progress, string method, int before, int total)
             {
                 _progress = progress;
                 _method = method;
@@ -119,7 +119,7 @@ namespace DeltaInterpolator.Core.Workflows
                 _total = total;
             }
 
-            public void Report(int value) => _progress.Report(new BakeProgress(_method, _before + value, _total));
+            public void Report(int value) => _progress.Report(new StageProgress(_method, _before + value, _total));
         }
     }
 }

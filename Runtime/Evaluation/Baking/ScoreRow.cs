@@ -29,11 +29,7 @@ namespace DeltaInterpolator.Evaluation.Baking
             Group = group;
             Frames = frames;
             LegLength = legLength;
-            PositionPerLeg = positionPerLeg;
-            L2Q = l2q;
-            FootSkating = footSkating;
-            ContactSamples = contactSamples;
-            TruthFootSkating = truthFootSkating;
+            Errors = new MethodErrors(positionPerLeg, l2q, footSkating, contactSamples, truthFootSkating);
         }
 
         /// <summary>The file's name (relative to its data folder).</summary>
@@ -48,20 +44,8 @@ namespace DeltaInterpolator.Evaluation.Baking
         /// <summary>The file's leg length in its units.</summary>
         public double LegLength { get; }
 
-        /// <summary>Per method: mean joint position error ÷ leg length.</summary>
-        public IReadOnlyList<double> PositionPerLeg { get; }
-
-        /// <summary>Per method: L2Q.</summary>
-        public IReadOnlyList<double> L2Q { get; }
-
-        /// <summary>Per method: foot skating in leg lengths per second where the truth's feet are planted (0 with no <see cref="ContactSamples"/>).</summary>
-        public IReadOnlyList<double> FootSkating { get; }
-
-        /// <summary>Planted (frame, joint) pairs of the ground truth on the non-key frames: the weight of <see cref="FootSkating"/>.</summary>
-        public int ContactSamples { get; }
-
-        /// <summary>The ground truth's own foot skating (NaN with no contact samples).</summary>
-        public double TruthFootSkating { get; }
+        /// <summary>Every method's errors over the file's non-key frames (foot skating 0 with no contact samples).</summary>
+        public MethodErrors Errors { get; }
 
         private static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
     }

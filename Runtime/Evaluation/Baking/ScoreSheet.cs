@@ -29,7 +29,7 @@ namespace DeltaInterpolator.Evaluation.Baking
         /// <exception cref="ArgumentException">Its method count differs from the sheet's.</exception>
         public void Add(ScoreRow row)
         {
-            if (row.L2Q.Count != Methods.Count) throw new ArgumentException($"{row.File}: {row.L2Q.Count} methods; expected {Methods.Count}", nameof(row));
+            if (row.Errors.L2Q.Count != Methods.Count) throw new ArgumentException($"{row.File}: {row.Errors.L2Q.Count} methods; expected {Methods.Count}", nameof(row));
             _rows.Add(row);
         }
 
@@ -61,13 +61,13 @@ namespace DeltaInterpolator.Evaluation.Baking
                 frames += r.Frames;
                 for (int i = 0; i < methods; i++)
                 {
-                    p[i] += r.PositionPerLeg[i] * r.Frames;
-                    q[i] += r.L2Q[i] * r.Frames;
-                    if (r.ContactSamples > 0) skate[i] += r.FootSkating[i] * r.ContactSamples;
+                    p[i] += r.Errors.PositionPerLeg[i] * r.Frames;
+                    q[i] += r.Errors.L2Q[i] * r.Frames;
+                    if (r.Errors.ContactSamples > 0) skate[i] += r.Errors.FootSkating[i] * r.Errors.ContactSamples;
                 }
 
-                if (r.ContactSamples > 0) truthSkate += r.TruthFootSkating * r.ContactSamples;
-                contacts += r.ContactSamples;
+                if (r.Errors.ContactSamples > 0) truthSkate += r.Errors.TruthFootSkating * r.Errors.ContactSamples;
+                contacts += r.Errors.ContactSamples;
             }
 
             for (int i = 0; i < methods; i++)
@@ -78,7 +78,7 @@ namespace DeltaInterpolator.Evaluation.Baking
             }
 
             // Foot skating is a mean over planted (frame, joint) pairs, so it is weighted by them, not by frames.
-            return new ScoreTotal(files, frames, p, q, skate, contacts, contacts > 0 ? truthSkate / contacts : double.NaN);
+            return new ScoreTotal(files, frames, new MethodErrors(p, q, skate, contacts, contacts > 0 ? truthSkate / contacts : double.NaN));
         }
 
         /// <summary>Every file's total.</summary>

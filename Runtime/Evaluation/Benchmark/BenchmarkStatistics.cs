@@ -167,7 +167,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             int window = 50,
             int offset = 20,
             string source = "computed from training files",
-            IProgress<BenchmarkProgress>? progress = null)
+            IProgress<StageProgress>? progress = null)
         {
             if (clips == null || clips.Count == 0) throw new ArgumentException("no training clips; expected the LaFAN1 files of subjects 1-4", nameof(clips));
             if (window < facing.PastFrames || offset < 1) throw new ArgumentException($"window {window} / offset {offset}; expected window ≥ {facing.PastFrames} past frames and offset ≥ 1");
@@ -234,7 +234,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                     count = total;
                 }
 
-                progress?.Report(new BenchmarkProgress("Computing statistics", c + 1, clips.Count));
+                progress?.Report(new StageProgress("Computing statistics", c + 1, clips.Count));
             }
 
             if (count == 0) throw new ArgumentException($"the training clips are shorter than one window of {window} frames");

@@ -59,7 +59,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             BenchmarkStatistics statistics,
             IReadOnlyList<IInbetweener> methods,
             BenchmarkOptions options,
-            IProgress<BenchmarkProgress>? progress = null)
+            IProgress<StageProgress>? progress = null)
         {
             if (testClips == null || testClips.Count == 0) throw new ArgumentException("no test files; expected the LaFAN1 files of subject 5", nameof(testClips));
             if (methods == null || methods.Count == 0) throw new ArgumentException("no methods to evaluate", nameof(methods));
@@ -119,7 +119,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             double[] std = statistics.StandardDeviation;
 
             int done = 0;
-            progress?.Report(new BenchmarkProgress("Evaluating windows", 0, totalWindows));
+            progress?.Report(new StageProgress("Evaluating windows", 0, totalWindows));
             foreach (BvhAnimation animation in testClips)
             {
                 if (!animation.Skeleton.HasSameHierarchy(skeleton))
@@ -203,7 +203,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
                     }
 
                     done++;
-                    progress?.Report(new BenchmarkProgress("Evaluating windows", done, totalWindows));
+                    progress?.Report(new StageProgress("Evaluating windows", done, totalWindows));
                 }
             }
 

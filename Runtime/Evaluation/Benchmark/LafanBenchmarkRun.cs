@@ -35,7 +35,7 @@ namespace DeltaInterpolator.Evaluation.Benchmark
             string? statisticsPath,
             IReadOnlyList<IInbetweener> methods,
             BenchmarkOptions options,
-            IProgress<BenchmarkProgress>? progress)
+            IProgress<StageProgress>? progress)
         {
             long testBytes = folder.TestBytes();
             BenchmarkStatistics statistics;

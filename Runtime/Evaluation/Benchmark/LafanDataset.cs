@@ -56,18 +56,18 @@ namespace DeltaInterpolator.Evaluation.Benchmark
         /// Reads files in parallel (results in input order). The first malformed file's
         /// <see cref="BvhFormatException"/> is rethrown as is.
         /// </summary>
-        public static BvhAnimation[] ReadAll(IReadOnlyList<string> paths, IProgress<BenchmarkProgress>? progress = null, string stage = "Reading BVH files")
+        public static BvhAnimation[] ReadAll(IReadOnlyList<string> paths, IProgress<StageProgress>? progress = null, string stage = "Reading BVH files")
         {
             var result = new BvhAnimation[paths.Count];
             int done = 0;
-            progress?.Report(new BenchmarkProgress(stage, 0, paths.Count));
+            progress?.Report(new StageProgress(stage, 0, paths.Count));
             try
             {
                 Parallel.For(0, paths.Count, i =>
                 {
                     result[i] = BvhReader.Read(paths[i]);
                     int completed = System.Threading.Interlocked.Increment(ref done);
-                    progress?.Report(new BenchmarkProgress(stage, completed, paths.Count));
+                    progress?.Report(new StageProgress(stage, completed, paths.Count));
                 });
             }
             catch (AggregateException e)

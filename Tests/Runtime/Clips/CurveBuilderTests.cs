@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
+using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Rotations;
@@ -14,17 +15,43 @@ namespace DeltaInterpolator.Tests.Clips
     {
         private static Skeleton Chain() => new Skeleton(new[] { "Hips", "Spine", "Head" }, new[] { -1, 0, 1 }, new double[] { 0, 90, 0, 0, 10, 0, 0, 20, 0 });
 
-        private static readonly string?[] Paths = { "Hips", "Hips/Spine", "Hips/Spine/Head" };
+        private static readonly string[] Paths = { "Hips", "Hips/Spine", "Hips/Spine/Head" };
+
+        // The chain as a character: its armature holds the bones in metres under a centimetre skeleton (scale 100), no
+        // turn, so a root position in Unity metres lands in the skeleton's centimetres; the reference pose is identity.
+        private static CharacterRig Rig()
+        {
+            Skeleton chain = Chain();
+            var rotations = new double[12];
+            for (int b = 0; b < 3; b++) rotations[4 * b] = 1;
+            return new CharacterRig("chain", chain.Names, chain.Parents, new double[] { 0, 0.9, 0, 0, 0.1, 0, 0, 0.2, 0 }, rotations,
+                new RootFrame(Vector3D.Zero, QuaternionD.Identity, 100));
+        }
+
+        private static CharacterPoseTrack Track(int frameCount) => new CharacterPoseTrack(Rig(), frameCount, 1.0 / 30);
+
+        // A pose as Unity's transforms give it: rotations in Unity's (x, y, z, w) order, turned into the track's (w, x, y, z).
+        private static void SetUnityPose(CharacterPoseTrack track, int frame, float[] localRotationsXyzw, float rootX, float rootY, float rootZ)
+        {
+            var wxyz = new double[localRotationsXyzw.Length];
+            for (int b = 0; b < wxyz.Length / 4; b++)
+            {
+                wxyz[4 * b] = localRotationsXyzw[4 * b + 3];
+                for (int c = 0; c < 3; c++) wxyz[4 * b + 1 + c] = localRotationsXyzw[4 * b + c];
+            }
+
+            track.SetUnityPose(frame, new double[] { rootX, rootY, rootZ }, wxyz);
+        }
 
         [Test]
         public void AUnityYawBecomesTheMirroredModelRotation()
         {
             // Mirroring X: a point rotated in Unity and then mirrored lands where the mirrored point lands
             // under the model-space rotation.
-            var track = new KeyPoseTrack(Chain(), 1, 30, 0.01);
+            CharacterPoseTrack track = Track(1);
             double half = 0.3;
             float[] unity = { 0, (float)Math.Sin(half), 0, (float)Math.Cos(half), 0.2f, 0.1f, -0.3f, 0.927f, 0, 0, 0, 1 };
-            track.SetUnityPose(0, unity, 1f, 2f, 3f);
+            SetUnityPose(track, 0, unity, 1f, 2f, 3f);
 
             QuaternionD model = QuaternionD.Read(track.Motion.LocalRotations, 0);
             RotationAssert.SameRotation(model, new QuaternionD(Math.Cos(half), 0, -Math.Sin(half), 0), 1e-6);
@@ -42,8 +69,7 @@ namespace DeltaInterpolator.Tests.Clips
         public void KeysSampledFromUnityComeBackAsTheSameCurveValues()
         {
             var random = new TestRandom(11);
-            Skeleton skeleton = Chain();
-            var track = new KeyPoseTrack(skeleton, 4, 30, 0.01);
+            CharacterPoseTrack track = Track(4);
             var poses = new List<float[]>();
             for (int f = 0; f < 4; f++)
             {
@@ -58,10 +84,10 @@ namespace DeltaInterpolator.Tests.Clips
                 }
 
                 poses.Add(pose);
-                track.SetUnityPose(f, pose, 0.1f * f, 0.9f, -0.2f * f);
+                SetUnityPose(track, f, pose, 0.1f * f, 0.9f, -0.2f * f);
             }
 
-            IReadOnlyList<ClipCurve> curves = CurveBuilder.Build(track.Motion, Paths, 0.01);
+            IReadOnlyList<ClipCurve> curves = CurveBuilder.BuildCharacter(track.Rig, track.Motion, Paths);
 
             Assert.That(curves.Count, Is.EqualTo(3 * 4 + 3));
             for (int j = 0; j < 3; j++)
@@ -101,7 +127,7 @@ namespace DeltaInterpolator.Tests.Clips
                 q.Write(motion.LocalRotations, motion.RotationIndex(f, 1));
             }
 
-            IReadOnlyList<ClipCurve> curves = CurveBuilder.Build(motion, Paths, 0.01);
+            IReadOnlyList<ClipCurve> curves = CurveBuilder.BuildCharacter(Rig(), motion, Paths);
             ClipCurve[] spine = curves.Where(c => c.Path == "Hips/Spine").ToArray();
             for (int f = 1; f < 37; f++)
             {
@@ -127,10 +153,10 @@ namespace DeltaInterpolator.Tests.Clips
         {
             // The window's path end to end with the SLERP baseline: two keys, the gap filled, curves built.
             Skeleton skeleton = Chain();
-            var track = new KeyPoseTrack(skeleton, 11, 30, 0.01);
+            CharacterPoseTrack track = Track(11);
             float s = (float)Math.Sin(0.5), c = (float)Math.Cos(0.5);
-            track.SetUnityPose(0, new float[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 }, 0, 1, 0);
-            track.SetUnityPose(10, new float[] { 0, s, 0, c, 0, 0, 0, 1, 0, 0, 0, 1 }, 1, 1, 0);
+            SetUnityPose(track, 0, new float[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 }, 0, 1, 0);
+            SetUnityPose(track, 10, new float[] { 0, s, 0, c, 0, 0, 0, 1, 0, 0, 0, 1 }, 1, 1, 0);
             var transition = new Transition(skeleton, 1, 9);
             MotionClip m = track.Motion;
             Array.Copy(m.LocalRotations, 0, transition.KeyLocalRotations, 0, 12);
@@ -144,7 +170,7 @@ namespace DeltaInterpolator.Tests.Clips
                 Array.Copy(transition.RootPositions, k * 3, m.LocalPositions, m.PositionIndex(k + 1, 0), 3);
             }
 
-            IReadOnlyList<ClipCurve> curves = CurveBuilder.Build(m, Paths, 0.01);
+            IReadOnlyList<ClipCurve> curves = CurveBuilder.BuildCharacter(track.Rig, m, Paths);
             ClipCurve hipsY = curves.Single(cv => cv.Path == "Hips" && cv.Property == "m_LocalRotation.y");
             ClipCurve hipsX = curves.Single(cv => cv.Path == "Hips" && cv.Property == "m_LocalPosition.x");
             for (int f = 0; f <= 10; f++)

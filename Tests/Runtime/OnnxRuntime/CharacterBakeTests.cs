@@ -1,3 +1,4 @@
+using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.IO;
@@ -68,8 +69,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             var progress = new Counter();
             BakeRun actual = CharacterBake.Run(model.Contract, track, JointMap.FromJson(json, "rig-b-map.json"), Methods(), progress,
                 maxBoneDeviationDegrees: 30); // CMU's T-pose frame holds the right shoulder 26° from the model's
-            Assert.That(progress.Last.GapsDone, Is.EqualTo(progress.Last.GapsTotal), "progress reaches every gap of every method");
-            Assert.That(progress.Last.GapsTotal, Is.EqualTo(2 * (keys.Length - 1)));
+            Assert.That(progress.Last.Completed, Is.EqualTo(progress.Last.Total), "progress reaches every gap of every method");
+            Assert.That(progress.Last.Total, Is.EqualTo(2 * (keys.Length - 1)));
 
             double leg = cli.LegLength;
             Assert.That(actual.Rig.LegLength / Metres, Is.EqualTo(leg).Within(1e-6 * leg), "leg length in the character's units");
@@ -133,11 +134,11 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             armature.PointFromParent(Handedness.PositionToUnity(Vector3D.Read(clip.LocalPositions, clip.PositionIndex(frame, 0)))).Write(root, 0);
         }
 
-        private sealed class Counter : IProgress<BakeProgress>
+        private sealed class Counter : IProgress<StageProgress>
         {
-            public BakeProgress Last { get; private set; }
+            public StageProgress Last { get; private set; }
 
-            public void Report(BakeProgress value) => Last = value;
+            public void Report(StageProgress value) => Last = value;
         }
     }
 }

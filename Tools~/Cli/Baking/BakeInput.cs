@@ -10,7 +10,7 @@ using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Retargeting;
 using DeltaInterpolator.Core.Skeletons;
 using DeltaInterpolator.Core.Workflows;
-using DeltaInterpolator.Evaluation.Benchmark;
+using DeltaInterpolator.Core;
 using Spectre.Console;
 
 namespace DeltaInterpolator.Cli.Baking
@@ -110,13 +110,13 @@ namespace DeltaInterpolator.Cli.Baking
             "key frames: the input's, copied exactly (mapping them to the model's skeleton and back came within {0:0.###e+0}° of them)", rig.KeyRoundTripDegrees);
 
         /// <summary>Gaps filled by every method → one progress bar ("Baking gaps"), updated synchronously.</summary>
-        private sealed class GapProgress : IProgress<BakeProgress>
+        private sealed class GapProgress : IProgress<StageProgress>
         {
-            private readonly IProgress<BenchmarkProgress> _bars;
+            private readonly IProgress<StageProgress> _bars;
 
-            public GapProgress(IProgress<BenchmarkProgress> bars) => _bars = bars;
+            public GapProgress(IProgress<StageProgress> bars) => _bars = bars;
 
-            public void Report(BakeProgress value) => _bars.Report(new BenchmarkProgress("Baking gaps", value.GapsDone, value.GapsTotal));
+            public void Report(StageProgress value) => _bars.Report(new StageProgress("Baking gaps", value.Completed, value.Total));
         }
     }
 }

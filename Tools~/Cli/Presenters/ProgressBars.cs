@@ -1,5 +1,5 @@
 using System;
-using DeltaInterpolator.Evaluation.Benchmark;
+using DeltaInterpolator.Core;
 using Spectre.Console;
 
 namespace DeltaInterpolator.Cli.Presenters
@@ -11,7 +11,7 @@ namespace DeltaInterpolator.Cli.Presenters
     internal static class ProgressBars
     {
         /// <summary>Runs <paramref name="work"/> with a progress receiver (null when bars are skipped).</summary>
-        public static void Run(Action<IProgress<BenchmarkProgress>?> work)
+        public static void Run(Action<IProgress<StageProgress>?> work)
         {
             IAnsiConsole progressConsole = AnsiConsole.Create(new AnsiConsoleSettings
             {

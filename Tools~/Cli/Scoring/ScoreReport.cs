@@ -15,31 +15,31 @@ namespace DeltaInterpolator.Cli.Scoring
             using var buffer = new MemoryStream();
             using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
             {
-                void Methods(string key, IReadOnlyList<double> p, IReadOnlyList<double> q, IReadOnlyList<double> skate, int contacts)
+                // A file's or a total's errors: planted samples, the truth's skating, each method.
+                void Errors(MethodErrors e)
                 {
-                    w.WriteStartObject(key);
+                    w.WriteNumber("foot_contact_samples", e.ContactSamples);
+                    Skating("ground_truth_foot_skating", e.TruthFootSkating, e.ContactSamples);
+                    w.WriteStartObject("methods");
                     for (int i = 0; i < methods; i++)
                     {
                         w.WriteStartObject(i < methods - 1 ? sheet.Methods[i] : "slerp");
-                        w.WriteNumber("position_per_leg", p[i]);
-                        w.WriteNumber("l2q", q[i]);
-                        w.WriteNumber("position_vs_slerp", p[i] / p[methods - 1]);
-                        w.WriteNumber("l2q_vs_slerp", q[i] / q[methods - 1]);
-                        if (contacts > 0 && double.IsFinite(skate[i])) w.WriteNumber("foot_skating", skate[i]);
-                        else w.WriteNull("foot_skating");
+                        w.WriteNumber("position_per_leg", e.PositionPerLeg[i]);
+                        w.WriteNumber("l2q", e.L2Q[i]);
+                        w.WriteNumber("position_vs_slerp", e.PositionRatio(i));
+                        w.WriteNumber("l2q_vs_slerp", e.L2QRatio(i));
+                        Skating("foot_skating", e.FootSkating[i], e.ContactSamples);
                         w.WriteEndObject();
                     }
 
                     w.WriteEndObject();
                 }
 
-                // A group's or the whole sheet's sums: frames, planted samples, the truth's skating, each method.
+                // A group's or the whole sheet's sums: frames, then the errors.
                 void Totals(ScoreTotal t)
                 {
                     w.WriteNumber("non_key_frames", t.Frames);
-                    w.WriteNumber("foot_contact_samples", t.ContactSamples);
-                    Skating("ground_truth_foot_skating", t.TruthFootSkating, t.ContactSamples);
-                    Methods("methods", t.PositionPerLeg, t.L2Q, t.FootSkating, t.ContactSamples);
+                    Errors(t.Errors);
                 }
 
                 void Skating(string key, double value, int contacts)
@@ -71,9 +71,7 @@ namespace DeltaInterpolator.Cli.Scoring
                     w.WriteString("group", r.Group);
                     w.WriteNumber("non_key_frames", r.Frames);
                     w.WriteNumber("leg_length", r.LegLength);
-                    w.WriteNumber("foot_contact_samples", r.ContactSamples);
-                    Skating("ground_truth_foot_skating", r.TruthFootSkating, r.ContactSamples);
-                    Methods("methods", r.PositionPerLeg, r.L2Q, r.FootSkating, r.ContactSamples);
+                    Errors(r.Errors);
                     w.WriteEndObject();
                 }
 

@@ -32,20 +32,20 @@ namespace DeltaInterpolator.Cli.Scoring
             }
 
             foreach (string line in legend) AnsiConsole.WriteLine(line);
-            void AddRow(string label, IReadOnlyList<double> p, IReadOnlyList<double> q, int frames, bool bold)
+            void AddRow(string label, MethodErrors e, int frames, bool bold)
             {
                 var cells = new List<string> { bold ? $"[bold]{Markup.Escape(label)}[/]" : Markup.Escape(label), frames.ToString("N0", CultureInfo.InvariantCulture) };
                 for (int i = 0; i < methods; i++)
                 {
-                    string cell = string.Format(CultureInfo.InvariantCulture, "{0:0.0000} / {1:0.000}", p[i], q[i]);
-                    if (i < methods - 1) cell += string.Format(CultureInfo.InvariantCulture, " ({0:0.00} / {1:0.00})", p[i] / p[methods - 1], q[i] / q[methods - 1]);
+                    string cell = string.Format(CultureInfo.InvariantCulture, "{0:0.0000} / {1:0.000}", e.PositionPerLeg[i], e.L2Q[i]);
+                    if (i < methods - 1) cell += string.Format(CultureInfo.InvariantCulture, " ({0:0.00} / {1:0.00})", e.PositionRatio(i), e.L2QRatio(i));
                     cells.Add(cell);
                 }
 
                 table.AddRow(cells.ToArray());
             }
 
-            foreach (ScoreRow r in sheet.Rows) AddRow(r.File, r.PositionPerLeg, r.L2Q, r.Frames, false);
+            foreach (ScoreRow r in sheet.Rows) AddRow(r.File, r.Errors, r.Frames, false);
             SortedDictionary<string, List<ScoreRow>> groups = sheet.Groups();
             groups.Remove(""); // files without a subject are in the total only
             if (groups.Count > 1)
@@ -53,19 +53,19 @@ namespace DeltaInterpolator.Cli.Scoring
                 foreach (var g in groups)
                 {
                     ScoreTotal t = sheet.Total(g.Value);
-                    AddRow("subject " + g.Key, t.PositionPerLeg, t.L2Q, t.Frames, true);
+                    AddRow("subject " + g.Key, t.Errors, t.Frames, true);
                 }
             }
 
             ScoreTotal all = sheet.Total();
-            AddRow($"all {sheet.Rows.Count} files", all.PositionPerLeg, all.L2Q, all.Frames, true);
+            AddRow($"all {sheet.Rows.Count} files", all.Errors, all.Frames, true);
             AnsiConsole.Write(table);
-            if (all.ContactSamples == 0) return;
+            if (all.Errors.ContactSamples == 0) return;
             var parts = new List<string>();
-            for (int i = 0; i < methods; i++) parts.Add(string.Format(CultureInfo.InvariantCulture, "{0} {1:0.000}", sheet.Methods[i], all.FootSkating[i]));
+            for (int i = 0; i < methods; i++) parts.Add(string.Format(CultureInfo.InvariantCulture, "{0} {1:0.000}", sheet.Methods[i], all.Errors.FootSkating[i]));
             AnsiConsole.MarkupLine(Markup.Escape(string.Format(CultureInfo.InvariantCulture,
                 "foot skating over all files (leg lengths per second, on the {0:N0} (frame, joint) pairs where the ground truth's feet are planted): {1}; ground truth {2:0.000}",
-                all.ContactSamples, string.Join(", ", parts), all.TruthFootSkating)));
+                all.Errors.ContactSamples, string.Join(", ", parts), all.Errors.TruthFootSkating)));
         }
     }
 }

@@ -20,15 +20,15 @@ namespace DeltaInterpolator.Tests.Baking
             ScoreTotal all = sheet.Total();
             Assert.That(all.Files, Is.EqualTo(3));
             Assert.That(all.Frames, Is.EqualTo(500));
-            Assert.That(all.PositionPerLeg[0], Is.EqualTo((0.02 * 100 + 0.06 * 300 + 0.01 * 100) / 500).Within(1e-12));
-            Assert.That(all.L2QRatio(0), Is.EqualTo((0.2 * 100 + 0.6 * 300 + 0.1 * 100) / (0.4 * 100 + 0.8 * 300 + 0.2 * 100)).Within(1e-12));
-            Assert.That(all.ContactSamples, Is.EqualTo(40));
-            Assert.That(all.FootSkating[0], Is.EqualTo((0.1 * 30 + 0.5 * 10) / 40).Within(1e-12));
-            Assert.That(all.FootSkating[1], Is.EqualTo((0.3 * 30 + 0.7 * 10) / 40).Within(1e-12));
-            Assert.That(all.TruthFootSkating, Is.EqualTo((0.05 * 30 + 0.01 * 10) / 40).Within(1e-12));
+            Assert.That(all.Errors.PositionPerLeg[0], Is.EqualTo((0.02 * 100 + 0.06 * 300 + 0.01 * 100) / 500).Within(1e-12));
+            Assert.That(all.Errors.L2QRatio(0), Is.EqualTo((0.2 * 100 + 0.6 * 300 + 0.1 * 100) / (0.4 * 100 + 0.8 * 300 + 0.2 * 100)).Within(1e-12));
+            Assert.That(all.Errors.ContactSamples, Is.EqualTo(40));
+            Assert.That(all.Errors.FootSkating[0], Is.EqualTo((0.1 * 30 + 0.5 * 10) / 40).Within(1e-12));
+            Assert.That(all.Errors.FootSkating[1], Is.EqualTo((0.3 * 30 + 0.7 * 10) / 40).Within(1e-12));
+            Assert.That(all.Errors.TruthFootSkating, Is.EqualTo((0.05 * 30 + 0.01 * 10) / 40).Within(1e-12));
             ScoreTotal second = sheet.Total(sheet.Groups()["02"]);
-            Assert.That(second.ContactSamples, Is.EqualTo(0));
-            Assert.That(double.IsNaN(second.FootSkating[0]), Is.True, "no planted foot: no skating, not 0");
+            Assert.That(second.Errors.ContactSamples, Is.EqualTo(0));
+            Assert.That(double.IsNaN(second.Errors.FootSkating[0]), Is.True, "no planted foot: no skating, not 0");
         }
 
         [Test]
