@@ -242,7 +242,7 @@ namespace DeltaInterpolator.Core.Scheduling
             int joints = Contract.JointCount;
             for (int q = 0; q < per && from + q < t.MissingFrames; q++)
             {
-                _rows.Decode(t, request.Keys, OutputRow.Of(outputs, r * per + q, joints), from + q, t.RootPositions, t.LocalRotations);
+                _rows.Decode(t, request.Keys, OutputRow.Of(outputs, r * per + q, joints), from + q, t.RootPositions, t.LocalRotations, request.SlerpRotations);
                 request.Publish(from + q + 1);
             }
         }
