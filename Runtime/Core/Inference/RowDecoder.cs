@@ -6,11 +6,12 @@ namespace DeltaInterpolator.Core.Inference
 {
     /// <summary>
     /// The one decode path from a request to its frames, whatever runs the network: <see cref="Localize"/> puts
-    /// a request's keys into the model's frame and builds their <c>key_features</c>; <see cref="Decode"/> turns one
-    /// network output row (<see cref="OutputRow"/>) into one missing frame in the world (the Δ baseline plus the
-    /// row's deltas through <see cref="OutputDecoder"/>, un-localized); <see cref="Baseline"/> gives the same frame
-    /// without the network (SLERP). The whole-transition run, the lazy runs and the batched schedulers all go
-    /// through it, so every path is the same maths.
+    /// a request's keys into the model's frame and builds their <c>key_features</c>;
+    /// <see cref="Decode(Transition, LocalizedKeys, OutputRow, int, double[], double[])"/> turns one network output
+    /// row (<see cref="OutputRow"/>) into one missing frame in the world (the Δ baseline plus the row's deltas through
+    /// <see cref="OutputDecoder"/>, un-localized); <see cref="Baseline"/> gives the same frame without the network
+    /// (SLERP). The whole-transition run, the lazy runs and the batched schedulers all go through it, so every path
+    /// is the same maths.
     /// </summary>
     /// <remarks>Allocation-free. Holds the feature builder's scratch buffers, so use one per thread.</remarks>
     public sealed class RowDecoder
@@ -55,7 +56,17 @@ namespace DeltaInterpolator.Core.Inference
         /// world space, into <paramref name="roots"/> (n × 3) and <paramref name="rotations"/> (n × J × 4) at k, and its
         /// predicted foot contacts, when the model gives them, into the transition's <see cref="Transition.FootContacts"/> at k.
         /// </summary>
-        public void Decode(Transition transition, LocalizedKeys keys, OutputRow row, int k, double[] roots, double[] rotations)
+        public void Decode(Transition transition, LocalizedKeys keys, OutputRow row, int k, double[] roots, double[] rotations) =>
+            Decode(transition, keys, row, k, roots, rotations, null);
+
+        /// <summary>
+        /// <see cref="Decode(Transition, LocalizedKeys, OutputRow, int, double[], double[])"/> with the request's SLERP
+        /// frames as <see cref="Baseline"/> wrote them (n × J × 4, <paramref name="slerpRotations"/>; null: computed here):
+        /// every joint but the root reads its Δ baseline from there instead of evaluating the slerp again — the same
+        /// doubles, since both come from the same <see cref="SlerpPair"/> at the same weight — so a scheduler that
+        /// decodes many rows per frame reads 4 values per joint instead of the joint's slerp constants and two sines.
+        /// </summary>
+        internal void Decode(Transition transition, LocalizedKeys keys, OutputRow row, int k, double[] roots, double[] rotations, double[]? slerpRotations)
         {
             int jc = Contract.JointCount;
             int last = transition.PastFrames - 1;
@@ -68,9 +79,12 @@ namespace DeltaInterpolator.Core.Inference
             Vector3D root = OutputDecoder.RootPosition(baseRoot, row.RootPositionDelta);
             loc.UnlocalizePosition(root).Write(roots, 3 * k);
             ReadOnlySpan<float> deltas = row.Rotation6DDelta;
+            // Baseline wrote the slerp for output Δ-modes slerp and none alike (mode none uses it as the hemisphere
+            // reference only); the root's there is un-localized, so the root's is always evaluated here.
+            bool stored = slerpRotations != null && mode != OutputDeltaMode.LastPose;
             for (int j = 0; j < jc; j++)
             {
-                QuaternionD baseRotation = DeltaBaseline.Rotation(mode, keys.Pairs[j], a);
+                QuaternionD baseRotation = stored && j > 0 ? QuaternionD.Read(slerpRotations!, (k * jc + j) * 4) : DeltaBaseline.Rotation(mode, keys.Pairs[j], a);
                 QuaternionD q = OutputDecoder.Rotation(mode, baseRotation, deltas.Slice(j * 6, 6));
                 if (j == 0) q = loc.UnlocalizeRootRotation(q);
                 q.Write(rotations, (k * jc + j) * 4);

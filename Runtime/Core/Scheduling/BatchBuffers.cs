@@ -57,6 +57,9 @@ namespace DeltaInterpolator.Core.Scheduling
 
         public int[] RowGeneration { get; private set; } = Array.Empty<int>();
 
+        /// <summary>Scratch rows for <see cref="HostFrameRuns"/>' placement of a frame run's requests (all null between runs).</summary>
+        public TransitionRequest?[] Placement { get; private set; } = Array.Empty<TransitionRequest?>();
+
         public IAsyncInferenceBinding? KeysPending { get; set; }
 
         public int KeysPendingRows { get; set; }
@@ -95,6 +98,7 @@ namespace DeltaInterpolator.Core.Scheduling
             FrameIndex = new int[capacity];
             RowOwner = new TransitionRequest?[capacity];
             RowGeneration = new int[capacity];
+            Placement = new TransitionRequest?[capacity];
             return rows;
         }
 

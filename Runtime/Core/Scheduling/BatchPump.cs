@@ -94,6 +94,12 @@ namespace DeltaInterpolator.Core.Scheduling
         public long Tokens { get; private set; }
 
         /// <summary>
+        /// Key encodings copied from a request into a row of a frame batch so far (host key memory): at a request's first
+        /// frame run, and again only when it has to change rows.
+        /// </summary>
+        public long KeyMemoryCopies { get; private set; }
+
+        /// <summary>
         /// <see cref="Stopwatch"/> ticks spent in <see cref="Pump"/> so far: gathering inputs, running the graphs and
         /// scattering the results — the decoding work itself, without the players' per-frame playback (for benchmarks;
         /// written by the thread that pumps).
@@ -165,6 +171,9 @@ namespace DeltaInterpolator.Core.Scheduling
             Buffers.Clear();
             _buffers.Clear();
         }
+
+        /// <summary>Counts one key encoding copied into a frame batch row.</summary>
+        internal void CountKeyMemoryCopy() => KeyMemoryCopies++;
 
         /// <summary>Counts one run of <paramref name="rows"/> rows costing <paramref name="tokens"/>.</summary>
         internal void Count(int rows, int tokens)
@@ -242,7 +251,7 @@ namespace DeltaInterpolator.Core.Scheduling
             int joints = Contract.JointCount;
             for (int q = 0; q < per && from + q < t.MissingFrames; q++)
             {
-                _rows.Decode(t, request.Keys, OutputRow.Of(outputs, r * per + q, joints), from + q, t.RootPositions, t.LocalRotations);
+                _rows.Decode(t, request.Keys, OutputRow.Of(outputs, r * per + q, joints), from + q, t.RootPositions, t.LocalRotations, request.SlerpRotations);
                 request.Publish(from + q + 1);
             }
         }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using DeltaInterpolator.Core.Inference;
 
 namespace DeltaInterpolator.Core.Scheduling
@@ -61,6 +62,7 @@ namespace DeltaInterpolator.Core.Scheduling
             int per = Pump.FramesPerRun;
             int rows = group.Ensure(BatchPlanner.RowsThatFit(group.Scratch.Count, Pump.MaxBatch, budget, per, first));
             if (rows <= 0) return 0;
+            if (rows == group.Scratch.Count) KeepRows(group, rows);
             GraphTensors tensors = group.Frame!;
             float[] memory = tensors.KeyMemory!.Floats!;
             int size = group.MemorySize;
@@ -72,9 +74,12 @@ namespace DeltaInterpolator.Core.Scheduling
                 if (!ReferenceEquals(group.RowOwner[r], request) || group.RowGeneration[r] != request.Generation)
                 {
                     Array.Copy(request.KeyMemory!, 0, memory, r * size, size);
+                    Pump.CountKeyMemoryCopy();
                     group.RowOwner[r] = request;
                     group.RowGeneration[r] = request.Generation;
                 }
+
+                request.FrameRow = r;
 
                 int n = request.Transition.MissingFrames;
                 int from = request.Decoded;
@@ -88,6 +93,46 @@ namespace DeltaInterpolator.Core.Scheduling
 
             if (Launch(group, Graph.Frames, rows, rows * per, out IInferenceBinding? binding)) ScatterFrames(group, rows);
             return binding == null ? 0 : rows * per;
+        }
+
+        /// <summary>
+        /// Orders the first <paramref name="rows"/> requests of the group's scratch (all of them: the whole set runs at
+        /// once, so their order within the run changes no result) so that each request whose key memory a row of the
+        /// frame tensor still holds from the last run keeps that row, and the others take the free rows in their order.
+        /// When a transition ends, the requests after it would otherwise each move up a row and have their whole key
+        /// memory (R × 2 × K × D floats) copied again; now only the new ones are copied.
+        /// </summary>
+        private static void KeepRows(BatchBuffers group, int rows)
+        {
+            List<TransitionRequest> scratch = group.Scratch;
+            TransitionRequest?[] placed = group.Placement;
+            int homeless = 0;
+            for (int i = 0; i < rows; i++)
+            {
+                TransitionRequest request = scratch[i];
+                int row = request.FrameRow;
+                if (row >= 0 && row < rows && placed[row] == null && ReferenceEquals(group.RowOwner[row], request) && group.RowGeneration[row] == request.Generation)
+                {
+                    placed[row] = request;
+                }
+                else
+                {
+                    // Read already (homeless ≤ i): the front of the scratch holds the requests without a row, in order.
+                    scratch[homeless++] = request;
+                }
+            }
+
+            int next = 0;
+            for (int row = 0; row < rows; row++)
+            {
+                if (placed[row] == null) placed[row] = scratch[next++];
+            }
+
+            for (int row = 0; row < rows; row++)
+            {
+                scratch[row] = placed[row]!;
+                placed[row] = null;
+            }
         }
 
         private void ScatterFrames(BatchBuffers group, int rows)

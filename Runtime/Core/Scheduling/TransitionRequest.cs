@@ -60,6 +60,12 @@ namespace DeltaInterpolator.Core.Scheduling
         /// <summary>Scheduler state (one thread): part of a run not collected yet.</summary>
         public bool InFlight { get; set; }
 
+        /// <summary>
+        /// Scheduler state (one thread): the row of its group's frame tensor its key memory was last gathered into (−1:
+        /// none yet); the row still holds it while the tensor's owner of that row is this request at this <see cref="Generation"/>.
+        /// </summary>
+        public int FrameRow { get; set; } = -1;
+
         /// <summary>Missing frames decoded so far (0..n), in order.</summary>
         public int Decoded => Volatile.Read(ref _decoded);
 

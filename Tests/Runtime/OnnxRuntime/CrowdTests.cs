@@ -56,6 +56,42 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
         }
 
+        [Test]
+        public void WhenTransitionsEndThePlayingCharactersKeepTheirBatchRows()
+        {
+            // 12 characters whose transitions end at five different times (0.4–0.8 s): as each ends, the characters
+            // still playing keep the frame-batch row that holds their key encoding, so each encoding is copied into the
+            // batch once, plus once per character that has to move into a row freed below the shrinking batch.
+            using var crowd = new Crowd(new MainThreadScheduler(OnnxRuntimeInbetweener.Load(Fixtures.TinyModel, requireLazy: true), framesPerRun: 1), 12, seed: 3);
+            var scheduler = (MainThreadScheduler)crowd.Scheduler;
+            crowd.PlayUntil(0.5);
+            crowd.RequestAll();
+            long before = scheduler.Batches.KeyMemoryCopies;
+            int moves = 0;
+            var rows = new int[12];
+            crowd.Step();
+            for (int i = 0; i < 12; i++) rows[i] = crowd.Players[i].CurrentRequest!.FrameRow;
+            while (crowd.Time < crowd.RequestTime + 1.0)
+            {
+                crowd.Step();
+                for (int i = 0; i < 12; i++)
+                {
+                    TransitionRequest r = crowd.Players[i].CurrentRequest!;
+                    if (r.FrameRow == rows[i]) continue;
+                    moves++;
+                    rows[i] = r.FrameRow;
+                }
+            }
+
+            long copies = scheduler.Batches.KeyMemoryCopies - before;
+            foreach (TransitionPlayer p in crowd.Players) Assert.That(p.CurrentRequest!.Decoded, Is.EqualTo(p.CurrentRequest.Transition.MissingFrames), "every transition decoded");
+            Assert.That(copies, Is.EqualTo(12 + moves), "one copy per request, and one per move");
+            // A row frees only when a transition ends, and a character moves only into a freed row: at most one move per
+            // transition that ends while others of its group (4 or 10 past keys) still play, 12 − 2. Rows that shift up
+            // behind each ended transition moved 15 here.
+            Assert.That(moves, Is.LessThanOrEqualTo(12 - 2), "a character moves only into a row freed by an ended transition");
+        }
+
         [TestCase(0, false)]
         [TestCase(2, false)]
         [TestCase(5, false)]
