@@ -68,6 +68,12 @@ namespace UnityEngine.Animations
         public void SetApplyFootIK(bool value) => throw null!;
 
         public void SetApplyPlayableIK(bool value) => throw null!;
+
+        public AnimationClip GetAnimationClip() => throw null!;
+
+        public static implicit operator Playable(AnimationClipPlayable playable) => throw null!;
+
+        public static explicit operator AnimationClipPlayable(Playable playable) => throw null!;
     }
 
     // source: unity:Modules/Animation/ScriptBindings/AnimationPlayableOutput.bindings.cs
