@@ -20,7 +20,8 @@ namespace DeltaInterpolator.Unity
     /// (the Animation window's layer mixer of default pose, clip and candidate keys; a Timeline track's mixer);
     /// <c>UpdatePreviewGraph</c> before each evaluation (the Animation window: every resample; Timeline: after it set its
     /// clips' times); <c>StopPreview</c> after the graph was destroyed.</para>
-    /// <para>The graph: a two-input mixer, the input at 1 − w and the filled copy's clip playable at w. w is Core's
+    /// <para>The graph: a two-layer mixer, the input at weight 1 and the filled copy's clip playable as an override layer
+    /// at w (curves the copy has replace the input's; the rest keep the input's, as under the keyed clip). w is Core's
     /// (<see cref="FillPreviewBoard{TClip}.Weight"/>): 1 where the input plays the keyed clip
     /// (<see cref="PreviewGraphSearch"/>), else 0. The copy plays at the keyed clip playable's time, so the Animation
     /// window's playhead and a Timeline clip's clip-in, speed and offsets apply to it as to the clip. A new publish or a
@@ -31,7 +32,7 @@ namespace DeltaInterpolator.Unity
     {
         private readonly GameObject _character;
         private Playable _input;
-        private AnimationMixerPlayable _mixer;
+        private AnimationLayerMixerPlayable _mixer;
         private AnimationClipPlayable _filled;
         private int _version = -1;
 
@@ -78,7 +79,9 @@ namespace DeltaInterpolator.Unity
             Release();
             if (!active || Application.isPlaying || !graph.IsValid() || !input.IsValid()) return input;
             _input = input;
-            _mixer = AnimationMixerPlayable.Create(graph, 2);
+            // A layer mixer, the copy an override layer: bones and properties the copy does not key keep the input's
+            // values (the Animation window's default-pose layer, a track's other curves), as they do under the clip.
+            _mixer = AnimationLayerMixerPlayable.Create(graph, 2);
             graph.Connect(input, 0, _mixer, 0);
             _mixer.SetInputWeight(0, 1f);
             _mixer.SetInputWeight(1, 0f);
@@ -105,7 +108,6 @@ namespace DeltaInterpolator.Unity
                 if (weight > 0f) _filled.SetTime(at.GetTime());
             }
 
-            _mixer.SetInputWeight(0, 1f - weight);
             _mixer.SetInputWeight(1, weight);
         }
 

@@ -62,7 +62,7 @@ namespace DeltaInterpolator.Tests.Unity
             IAnimationWindowPreview preview = _character.GetComponent<MotionInbetweener>();
             preview.StartPreview();
             Playable root = preview.BuildPreviewGraph(_graph, window);
-            Assert.That(root.Equals((Playable)window), Is.False, "a mixer over the window's pose");
+            Assert.That(root.GetPlayableType(), Is.EqualTo(typeof(AnimationLayerMixerPlayable)), "a layer mixer over the window's pose");
             Assert.That(root.GetInput(0).Equals((Playable)window), Is.True);
 
             preview.UpdatePreviewGraph(_graph);
@@ -71,7 +71,7 @@ namespace DeltaInterpolator.Tests.Unity
             FillPreviewLayer.Publish(_character, _keyed, _filled);
             keyed.SetTime(0.4);
             preview.UpdatePreviewGraph(_graph);
-            Assert.That((root.GetInputWeight(0), root.GetInputWeight(1)), Is.EqualTo((0f, 1f)), "published for this character and clip");
+            Assert.That((root.GetInputWeight(0), root.GetInputWeight(1)), Is.EqualTo((1f, 1f)), "published for this character and clip: the copy overrides the window's pose");
             Playable copy = root.GetInput(1);
             Assert.That(copy.GetPlayableType(), Is.EqualTo(typeof(AnimationClipPlayable)));
             Assert.That(((AnimationClipPlayable)copy).GetAnimationClip(), Is.EqualTo(_filled));

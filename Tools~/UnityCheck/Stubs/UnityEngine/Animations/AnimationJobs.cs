@@ -90,6 +90,14 @@ namespace UnityEngine.Animations
         public static implicit operator Playable(AnimationMixerPlayable playable) => throw null!;
     }
 
+    // source: unity:Modules/Animation/ScriptBindings/AnimationLayerMixerPlayable.bindings.cs
+    public partial struct AnimationLayerMixerPlayable : IPlayable
+    {
+        public static AnimationLayerMixerPlayable Create(PlayableGraph graph, int inputCount = 0) => throw null!;
+
+        public static implicit operator Playable(AnimationLayerMixerPlayable playable) => throw null!;
+    }
+
     // source: unity:Modules/Animation/Managed/AnimationPlayableBinding.cs
     public static partial class AnimationPlayableBinding
     {
