@@ -57,6 +57,10 @@ namespace DeltaInterpolator.Editor.Baking
         [NonSerialized] private ClipCurves? _read;
         [NonSerialized] private AnimationClip? _previewClip;
         [NonSerialized] private float _previewTime;
+        // Where the preview shows: the character it was published on (its Motion Inbetweener's preview layer), and
+        // whether the Animation window shows it (else this window samples it in animation mode at its own slider).
+        [NonSerialized] private GameObject? _publishedOn;
+        [NonSerialized] private bool _inAnimationWindow;
         [NonSerialized] private string _report = "";
         [NonSerialized] private (UnityEngine.Object? Clip, UnityEngine.Object? Character, UnityEngine.Object? Settings, UnityEngine.Object? Model, bool UseRange, int Start, int End, bool LockFeet) _computedFor;
 
@@ -113,6 +117,11 @@ namespace DeltaInterpolator.Editor.Baking
             if (_previewClip == null)
             {
                 if (GUILayout.Button("Preview")) StartPreview();
+            }
+            else if (_inAnimationWindow)
+            {
+                EditorGUILayout.HelpBox("The Animation window shows the fill over the clip (and Timeline, where it plays this clip on the character): scrub its playhead. Nothing is written yet.", MessageType.None);
+                if (GUILayout.Button("Stop preview")) StopPreview();
             }
             else
             {
@@ -230,17 +239,54 @@ namespace DeltaInterpolator.Editor.Baking
 
         private void StartPreview()
         {
-            if (AnimationMode.InAnimationMode())
+            // With a Motion Inbetweener on the character, its preview layer (IAnimationWindowPreview) shows the fill in the
+            // Animation window's own preview of this clip and in Timeline's; otherwise this window samples it itself.
+            bool layer = _character!.GetComponent<MotionInbetweener>() != null;
+            AnimationWindow? window = layer ? WindowOn(_clip!) : null;
+            if (window == null && AnimationMode.InAnimationMode())
             {
-                EditorUtility.DisplayDialog("Cannot preview", "The editor is in animation mode (the Animation window previews or records); leave preview and record mode, then preview the fill.", "OK");
+                EditorUtility.DisplayDialog("Cannot preview", "The editor is in animation mode (the Animation window previews or records another clip or character, or Timeline previews); leave preview and record mode, then preview the fill. With a Motion Inbetweener on the character, the Animation window's own preview of this clip shows the fill.", "OK");
                 return;
             }
 
             _edit = Compute();
             if (_edit == null) return;
             _previewClip = _read!.Preview(_clip!, _edit);
+            if (layer)
+            {
+                FillPreviewLayer.Publish(_character, _clip!, _previewClip);
+                _publishedOn = _character;
+            }
+
+            _inAnimationWindow = window != null;
+            if (window != null)
+            {
+                Resample(window);
+                return;
+            }
+
             AnimationMode.StartAnimationMode();
             Sample(_previewTime);
+        }
+
+        /// <summary>The open Animation window when it is on <paramref name="clip"/>, else null (GetWindow would open one).</summary>
+        private static AnimationWindow? WindowOn(AnimationClip clip)
+        {
+            if (!HasOpenInstances<AnimationWindow>()) return null;
+            AnimationWindow window = GetWindow<AnimationWindow>(false, null, false);
+            return window.animationClip == clip ? window : null;
+        }
+
+        /// <summary>
+        /// Has the Animation window sample its preview again. Its resample (the only call that updates the preview layer
+        /// and evaluates) is internal; turning its preview off and on is public and rebuilds the graph, calling the
+        /// layer's StopPreview, StartPreview, BuildPreviewGraph and UpdatePreviewGraph (AnimationWindowControl).
+        /// </summary>
+        private static void Resample(AnimationWindow window)
+        {
+            if (window.previewing) window.previewing = false;
+            window.previewing = true;
+            UnityEditorInternal.InternalEditorUtility.RepaintAllViews();
         }
 
         private void Sample(float time)
@@ -257,7 +303,20 @@ namespace DeltaInterpolator.Editor.Baking
         private void StopPreview()
         {
             if (_previewClip == null) return;
-            AnimationMode.StopAnimationMode();
+            // Cleared before the copy is destroyed: the layer swaps the copy out at its next update.
+            if (_publishedOn != null) FillPreviewLayer.Clear(_publishedOn);
+            _publishedOn = null;
+            if (_inAnimationWindow)
+            {
+                AnimationWindow? window = _clip != null ? WindowOn(_clip) : null;
+                if (window != null && window.previewing) Resample(window);
+            }
+            else
+            {
+                AnimationMode.StopAnimationMode();
+            }
+
+            _inAnimationWindow = false;
             DestroyImmediate(_previewClip);
             _previewClip = null;
         }

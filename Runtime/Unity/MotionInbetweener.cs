@@ -5,6 +5,8 @@ using Unity.Profiling;
 using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Retargeting;
 using UnityEngine;
+using UnityEngine.Animations;
+using UnityEngine.Playables;
 
 namespace DeltaInterpolator.Unity
 {
@@ -33,7 +35,7 @@ namespace DeltaInterpolator.Unity
     [RequireComponent(typeof(Animator))]
     [DisallowMultipleComponent]
     [AddComponentMenu("Δ-Interpolator/Motion Inbetweener")]
-    public sealed class MotionInbetweener : MonoBehaviour
+    public sealed class MotionInbetweener : MonoBehaviour, IAnimationWindowPreview
     {
         [SerializeField]
         [Tooltip("Model, inference engine, joint names and blend times.")]
@@ -275,5 +277,13 @@ namespace DeltaInterpolator.Unity
         internal void MarkState(int stateHash, int layer, NeuralTransitionMode mode) => _build?.Watcher.MarkState(stateHash, layer, mode);
 
         private void OnCompleted(TransitionCompletion completion) => TransitionCompleted?.Invoke(completion);
+
+        // The Animation window's and Timeline's Editor previews: the key fill's result over the clip being keyed (FillPreviewLayer). Not game frames.
+        private FillPreviewLayer? _fillPreview;
+        private FillPreviewLayer FillPreview => _fillPreview ??= new FillPreviewLayer(gameObject);
+        void IAnimationWindowPreview.StartPreview() => FillPreview.Start();
+        void IAnimationWindowPreview.StopPreview() => FillPreview.Stop();
+        void IAnimationWindowPreview.UpdatePreviewGraph(PlayableGraph graph) => FillPreview.Update(graph);
+        Playable IAnimationWindowPreview.BuildPreviewGraph(PlayableGraph graph, Playable inputPlayable) => FillPreview.Build(graph, inputPlayable, enabled);
     }
 }

@@ -6,5 +6,7 @@ namespace UnityEditor
     public sealed partial class AnimationWindow : EditorWindow
     {
         public AnimationClip animationClip { get => throw null!; set => throw null!; }
+
+        public bool previewing { get => throw null!; set => throw null!; }
     }
 }

@@ -22,6 +22,8 @@ namespace UnityEngine
 
         public HideFlags hideFlags { get => throw null!; set => throw null!; }
 
+        public int GetInstanceID() => throw null!;
+
         public static void DestroyImmediate(Object obj) => throw null!;
 
         public static T Instantiate<T>(T original) where T : Object => throw null!;

@@ -68,6 +68,12 @@ namespace UnityEngine.Animations
         public void SetApplyFootIK(bool value) => throw null!;
 
         public void SetApplyPlayableIK(bool value) => throw null!;
+
+        public AnimationClip GetAnimationClip() => throw null!;
+
+        public static implicit operator Playable(AnimationClipPlayable playable) => throw null!;
+
+        public static explicit operator AnimationClipPlayable(Playable playable) => throw null!;
     }
 
     // source: unity:Modules/Animation/ScriptBindings/AnimationPlayableOutput.bindings.cs
@@ -82,6 +88,14 @@ namespace UnityEngine.Animations
         public static AnimationMixerPlayable Create(PlayableGraph graph, int inputCount = 0) => throw null!;
 
         public static implicit operator Playable(AnimationMixerPlayable playable) => throw null!;
+    }
+
+    // source: unity:Modules/Animation/ScriptBindings/AnimationLayerMixerPlayable.bindings.cs
+    public partial struct AnimationLayerMixerPlayable : IPlayable
+    {
+        public static AnimationLayerMixerPlayable Create(PlayableGraph graph, int inputCount = 0) => throw null!;
+
+        public static implicit operator Playable(AnimationLayerMixerPlayable playable) => throw null!;
     }
 
     // source: unity:Modules/Animation/Managed/AnimationPlayableBinding.cs

@@ -5,6 +5,10 @@ namespace UnityEngine.Playables
     // source: unity:Runtime/Export/Director/Playable.cs
     public partial struct Playable : IPlayable
     {
+        public static Playable Null => throw null!;
+
+        public System.Type GetPlayableType() => throw null!;
+
         public bool Equals(Playable other) => throw null!;
     }
 
@@ -113,6 +117,9 @@ namespace UnityEngine.Playables
             where U : struct, IPlayable => throw null!;
 
         public static void SetTime<U>(this U playable, double value)
+            where U : struct, IPlayable => throw null!;
+
+        public static double GetTime<U>(this U playable)
             where U : struct, IPlayable => throw null!;
 
         public static void SetSpeed<U>(this U playable, double value)
