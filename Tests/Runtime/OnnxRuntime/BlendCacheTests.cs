@@ -25,7 +25,6 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     [TestFixture]
     public sealed class BlendCacheTests
     {
-        private const string Jumps = "Samples~/Demo/cmu_01_01_jumps_turn.bvh";
         private const double Tolerance = 1e-5;
 
         private Inbetweener _model = null!;
@@ -37,12 +36,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [OneTimeSetUp]
         public void Load()
         {
-            MotionClip demo = _demo = TwoRigBakeTests.DemoWalk(); // frame 0: the T-pose, the rig's reference
+            DemoBlendClips clips = DemoBlendClips.Load();
+            (_demo, _rig, _walk, _jumps) = (clips.Demo, clips.Rig, clips.Walk, clips.Jumps);
             _model = TwoRigBakeTests.ShippedModel();
-            _rig = Rig(demo, RootFrame.Identity);
-            _walk = demo.Excerpt(120, 361); // 3 s of walking
-            MotionClip jumps = BvhReader.Read(ShippedModels.Find(Jumps)).Motion;
-            _jumps = new MotionClip(demo.Skeleton, 401, jumps.FrameTime, jumps.Excerpt(200, 401).LocalPositions, jumps.Excerpt(200, 401).LocalRotations);
         }
 
         [OneTimeTearDown]
@@ -69,19 +65,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
             // The same bake, laid out by hand: the editor baker's Core path on the walk's 10 frames up to 2.5 s and the jumps at 0.7 s.
             int p = model.PastFrames;
-            var track = new CharacterPoseTrack(_rig, p + n + 1, 1 / 30.0);
+            CharacterPoseTrack track = DemoBlendClips.LaidOut(_rig, p, n, 1 / 30.0, walk, k => span.FromTime - (p - 1 - k) / 30.0, jumps, 0.7);
             int bones = _rig.Skeleton.JointCount;
             var root = new double[3];
             var rotations = new double[4 * bones];
-            for (int k = 0; k < p; k++)
-            {
-                walk.Sample(span.FromTime - (p - 1 - k) / 30.0, root, rotations);
-                track.SetUnityPose(k, root, rotations);
-            }
-
-            jumps.Sample(0.7, root, rotations);
-            track.SetUnityPose(p + n, root, rotations);
-            var reference = new CountingNetwork(_model);
             MotionClip bake = CharacterBake.Run(_model.Contract, track, null, new[] { BakeMethod.Model(_model) }, null, 30).Methods[0].OnRig;
 
             // Model frames and points between them, visited at random, backwards and repeatedly, as a scrubbing playhead does.

@@ -20,7 +20,6 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     [TestFixture]
     public sealed class BlendTimingTests
     {
-        private const string Jumps = "Samples~/Demo/cmu_01_01_jumps_turn.bvh";
         private const double Tolerance = 1e-5;
         private const double Fps = 30;
 
@@ -32,12 +31,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [OneTimeSetUp]
         public void Load()
         {
-            MotionClip demo = TwoRigBakeTests.DemoWalk();
+            DemoBlendClips clips = DemoBlendClips.Load();
+            (_rig, _walk, _jumps) = (clips.Rig, clips.Walk, clips.Jumps);
             _model = TwoRigBakeTests.ShippedModel();
-            _rig = BlendCacheTests.Rig(demo, RootFrame.Identity);
-            _walk = demo.Excerpt(120, 361); // 3 s of walking at 120 fps
-            MotionClip jumps = BvhReader.Read(ShippedModels.Find(Jumps)).Motion;
-            _jumps = new MotionClip(demo.Skeleton, 401, jumps.FrameTime, jumps.Excerpt(200, 401).LocalPositions, jumps.Excerpt(200, 401).LocalRotations);
         }
 
         [OneTimeTearDown]
@@ -136,17 +132,9 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             int p = Model().PastFrames;
             int n = Model().MissingFrames(span.Duration);
             int bones = _rig.Skeleton.JointCount;
-            var track = new CharacterPoseTrack(_rig, p + n + 1, 1 / Fps);
+            CharacterPoseTrack track = DemoBlendClips.LaidOut(_rig, p, n, 1 / Fps, from, k => fromAnimationTime(span.Start - (p - 1 - k) / Fps), to, toTime);
             var root = new double[3];
             var rotations = new double[4 * bones];
-            for (int k = 0; k < p; k++)
-            {
-                from.Sample(fromAnimationTime(span.Start - (p - 1 - k) / Fps), root, rotations);
-                track.SetUnityPose(k, root, rotations);
-            }
-
-            to.Sample(toTime, root, rotations);
-            track.SetUnityPose(p + n, root, rotations);
             MotionClip bake = CharacterBake.Run(_model.Contract, track, null, new[] { BakeMethod.Model(_model) }, null, 30).Methods[0].OnRig;
 
             var expectedRoot = new double[3];
