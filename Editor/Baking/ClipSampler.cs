@@ -7,6 +7,7 @@ using DeltaInterpolator.Core.Playback;
 using DeltaInterpolator.Core.Skeletons;
 using UnityEditor;
 using DeltaInterpolator.Editor.Humanoid;
+using DeltaInterpolator.Unity;
 using UnityEngine;
 
 namespace DeltaInterpolator.Editor.Baking
@@ -81,7 +82,7 @@ namespace DeltaInterpolator.Editor.Baking
                 AnimationMode.BeginSampling();
                 AnimationMode.SampleAnimationClip(character, clip, (float)times[i]);
                 AnimationMode.EndSampling();
-                Read(bones, root, rotations);
+                BonePose.Read(bones, root, rotations);
                 track.SetUnityPose(frames[i], root, rotations);
             }
         }
@@ -136,23 +137,6 @@ namespace DeltaInterpolator.Editor.Baking
             }
 
             return recording.Curves(motion.FrameTime);
-        }
-
-        private static void Read(Transform[] bones, double[] root, double[] rotations)
-        {
-            for (int b = 0; b < bones.Length; b++)
-            {
-                Quaternion q = bones[b].localRotation;
-                rotations[4 * b] = q.w;
-                rotations[4 * b + 1] = q.x;
-                rotations[4 * b + 2] = q.y;
-                rotations[4 * b + 3] = q.z;
-            }
-
-            Vector3 p = bones[0].localPosition;
-            root[0] = p.x;
-            root[1] = p.y;
-            root[2] = p.z;
         }
     }
 

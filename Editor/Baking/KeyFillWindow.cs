@@ -358,19 +358,7 @@ namespace DeltaInterpolator.Editor.Baking
         private static double[] ScenePose(Transform[] bones)
         {
             var pose = new double[3 + 4 * bones.Length];
-            Vector3 p = bones[0].localPosition;
-            pose[0] = p.x;
-            pose[1] = p.y;
-            pose[2] = p.z;
-            for (int b = 0; b < bones.Length; b++)
-            {
-                Quaternion q = bones[b].localRotation;
-                pose[3 + 4 * b] = q.w;
-                pose[4 + 4 * b] = q.x;
-                pose[5 + 4 * b] = q.y;
-                pose[6 + 4 * b] = q.z;
-            }
-
+            BonePose.Read(bones, pose.AsSpan(0, 3), pose.AsSpan(3));
             return pose;
         }
     }

@@ -28,18 +28,7 @@ namespace DeltaInterpolator.Unity
         public void Sample(double time, Span<double> rootPosition, Span<double> localRotations)
         {
             _clip.SampleAnimation(_character, (float)time);
-            Vector3 p = _bones[0].localPosition;
-            rootPosition[0] = p.x;
-            rootPosition[1] = p.y;
-            rootPosition[2] = p.z;
-            for (int b = 0; b < _bones.Length; b++)
-            {
-                Quaternion q = _bones[b].localRotation;
-                localRotations[4 * b] = q.w;
-                localRotations[4 * b + 1] = q.x;
-                localRotations[4 * b + 2] = q.y;
-                localRotations[4 * b + 3] = q.z;
-            }
+            BonePose.Read(_bones, rootPosition, localRotations);
         }
     }
 }

@@ -39,14 +39,7 @@ namespace DeltaInterpolator.Unity
             if (!_animator.isHuman || _unavailable) return;
             if (_copy == null && !Copy()) return;
             clip.SampleAnimation(_copy!, time);
-            for (int b = 0; b < _bones.Length; b++)
-            {
-                Quaternion q = _copyBones![b].localRotation;
-                _reference[4 * b] = q.w;
-                _reference[4 * b + 1] = q.x;
-                _reference[4 * b + 2] = q.y;
-                _reference[4 * b + 3] = q.z;
-            }
+            BonePose.ReadRotations(_copyBones!, _reference);
 
             string? differs = SampledTargetCheck.Compare(target.Slice(3), _reference, clip.name, time, b => _bones[b].name);
             if (differs != null) Debug.LogWarning(_animator.name + ": " + differs, _animator);
