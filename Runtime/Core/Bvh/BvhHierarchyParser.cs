@@ -45,7 +45,7 @@ namespace DeltaInterpolator.Core.Bvh
             }
 
             _tokens.Skip();
-            string root = Expect("expected ROOT and the root joint's name after HIERARCHY");
+            string root = _tokens.Next(_source, "expected ROOT and the root joint's name after HIERARCHY");
             if (root != "ROOT")
             {
                 throw Error(_tokens.TokenLine, $"found '{BvhTokenizer.Shorten(root)}' after HIERARCHY", "expected ROOT and the root joint's name");
@@ -157,21 +157,21 @@ namespace DeltaInterpolator.Core.Bvh
 
         private void ParseEndSite(BvhJointDefinition joint, string name)
         {
-            string site = Expect("expected 'Site' after 'End'");
+            string site = _tokens.Next(_source, "expected 'Site' after 'End'");
             if (site != "Site")
             {
                 throw Error(_tokens.TokenLine, $"found 'End {BvhTokenizer.Shorten(site)}' in joint '{name}'", "expected 'End Site'");
             }
 
             ExpectOpeningBrace($"the End Site of joint '{name}'");
-            string offset = Expect($"expected OFFSET in the End Site of joint '{name}'");
+            string offset = _tokens.Next(_source, $"expected OFFSET in the End Site of joint '{name}'");
             if (offset != "OFFSET")
             {
                 throw Error(_tokens.TokenLine, $"found '{BvhTokenizer.Shorten(offset)}' in the End Site of joint '{name}'", "expected OFFSET x y z");
             }
 
             joint.EndSites.Add(ParseOffset($"the End Site of joint '{name}'"));
-            string close = Expect($"expected '}}' closing the End Site of joint '{name}' (unbalanced braces)");
+            string close = _tokens.Next(_source, $"expected '}}' closing the End Site of joint '{name}' (unbalanced braces)");
             if (close != "}")
             {
                 throw Error(_tokens.TokenLine, $"found '{BvhTokenizer.Shorten(close)}' in the End Site of joint '{name}'", "expected '}' closing the End Site (an End Site holds only an OFFSET)");
@@ -180,11 +180,7 @@ namespace DeltaInterpolator.Core.Bvh
 
         private void ExpectOpeningBrace(string what)
         {
-            if (!_tokens.TryNext(out string brace))
-            {
-                throw Error(Math.Max(_tokens.LineNumber, 1), "the file ends too early (truncated file?)", $"expected '{{' opening {what}");
-            }
-
+            string brace = _tokens.Next(_source, $"expected '{{' opening {what}");
             if (brace != "{")
             {
                 throw Error(_tokens.TokenLine, $"found '{BvhTokenizer.Shorten(brace)}' after the name of {what}", "expected '{'");
@@ -286,16 +282,6 @@ namespace DeltaInterpolator.Core.Bvh
             }
 
             return name;
-        }
-
-        private string Expect(string expected)
-        {
-            if (!_tokens.TryNext(out string token))
-            {
-                throw Error(Math.Max(_tokens.LineNumber, 1), "the file ends too early (truncated file?)", expected);
-            }
-
-            return token;
         }
 
         private BvhFormatException Error(int line, string problem, string expected) => new BvhFormatException(_source, line, problem, expected);

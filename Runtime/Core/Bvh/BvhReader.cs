@@ -145,7 +145,7 @@ namespace DeltaInterpolator.Core.Bvh
 
             private int ParseFrameCount()
             {
-                string frames = Expect("expected 'Frames: N' after MOTION");
+                string frames = _tokens.Next(_source, "expected 'Frames: N' after MOTION");
                 int line = _tokens.TokenLine;
                 if (frames != "Frames:")
                 {
@@ -173,7 +173,7 @@ namespace DeltaInterpolator.Core.Bvh
 
             private double ParseFrameTime()
             {
-                string frame = Expect("expected 'Frame Time: seconds' after the Frames: line");
+                string frame = _tokens.Next(_source, "expected 'Frame Time: seconds' after the Frames: line");
                 int line = _tokens.TokenLine;
                 string time = frame == "Frame" && _tokens.TryPeek(out string t) && _tokens.TokenLine == line ? t : "";
                 if (frame != "Frame" || time != "Time:")
@@ -242,16 +242,6 @@ namespace DeltaInterpolator.Core.Bvh
                 {
                     throw Error(_lines.LineNumber, $"frame {frame + 1} of {frameCount} has {count} values", $"expected {row.Length}, one per channel declared in the hierarchy");
                 }
-            }
-
-            private string Expect(string expected)
-            {
-                if (!_tokens.TryNext(out string token))
-                {
-                    throw Error(Math.Max(_tokens.LineNumber, 1), "the file ends too early (truncated file?)", expected);
-                }
-
-                return token;
             }
 
             private BvhFormatException Error(int line, string problem, string expected) => new BvhFormatException(_source, line, problem, expected);

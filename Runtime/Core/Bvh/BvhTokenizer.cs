@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.Text;
 
@@ -58,6 +59,20 @@ namespace DeltaInterpolator.Core.Bvh
             if (!TryPeek(out token)) return false;
             _index++;
             return true;
+        }
+
+        /// <summary>
+        /// Takes the next word; at the end of the data, the error of a truncated <paramref name="source"/> that says what
+        /// was <paramref name="expected"/> there (the hierarchy's and the MOTION header's one end-of-file message).
+        /// </summary>
+        public string Next(string source, string expected)
+        {
+            if (!TryNext(out string token))
+            {
+                throw new BvhFormatException(source, Math.Max(LineNumber, 1), "the file ends too early (truncated file?)", expected);
+            }
+
+            return token;
         }
 
         /// <summary>Takes the word last peeked.</summary>

@@ -1,7 +1,6 @@
 using DeltaInterpolator.Core.Characters;
 using System;
 using System.Collections.Generic;
-using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Clips

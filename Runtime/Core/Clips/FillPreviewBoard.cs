@@ -18,7 +18,8 @@ namespace DeltaInterpolator.Core.Clips
     /// </remarks>
     public sealed class FillPreviewBoard<TClip> where TClip : class
     {
-        private readonly Dictionary<int, Published> _byCharacter = new Dictionary<int, Published>();
+        // Per character: the keyed clip a preview was computed from, and the preview.
+        private readonly Dictionary<int, (int KeyedClip, TClip Preview)> _byCharacter = new Dictionary<int, (int KeyedClip, TClip Preview)>();
         private readonly Dictionary<int, int> _versions = new Dictionary<int, int>();
 
         /// <summary>
@@ -32,7 +33,7 @@ namespace DeltaInterpolator.Core.Clips
             if (character == 0) throw new ArgumentException("character: 0 is no object's id; expected the character's instance id", nameof(character));
             if (keyedClip == 0) throw new ArgumentException("keyedClip: 0 is no object's id; expected the keyed clip's instance id", nameof(keyedClip));
             if (preview == null) throw new ArgumentNullException(nameof(preview), "preview: null; expected the filled copy of the keyed clip");
-            _byCharacter[character] = new Published(keyedClip, preview);
+            _byCharacter[character] = (keyedClip, preview);
             Bump(character);
         }
 
@@ -50,7 +51,7 @@ namespace DeltaInterpolator.Core.Clips
         /// <summary>The preview published for <paramref name="character"/> and the clip it was computed from.</summary>
         public bool TryGet(int character, out int keyedClip, out TClip? preview)
         {
-            if (_byCharacter.TryGetValue(character, out Published p))
+            if (_byCharacter.TryGetValue(character, out (int KeyedClip, TClip Preview) p))
             {
                 keyedClip = p.KeyedClip;
                 preview = p.Preview;
@@ -68,21 +69,8 @@ namespace DeltaInterpolator.Core.Clips
         /// playable, <see cref="PreviewGraphSearch.Find"/>), else 0: the animator's own keys.
         /// </summary>
         public float Weight(int character, PreviewGraphSearch.Shown shown) =>
-            shown.Found && _byCharacter.TryGetValue(character, out Published p) && p.KeyedClip == shown.Clip ? 1f : 0f;
+            shown.Found && _byCharacter.TryGetValue(character, out (int KeyedClip, TClip Preview) p) && p.KeyedClip == shown.Clip ? 1f : 0f;
 
         private void Bump(int character) => _versions[character] = Version(character) + 1;
-
-        private readonly struct Published
-        {
-            public Published(int keyedClip, TClip preview)
-            {
-                KeyedClip = keyedClip;
-                Preview = preview;
-            }
-
-            public int KeyedClip { get; }
-
-            public TClip Preview { get; }
-        }
     }
 }

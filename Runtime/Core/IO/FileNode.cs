@@ -75,9 +75,7 @@ namespace DeltaInterpolator.Core.IO
                 }
             }
 
-            if (Directory.Exists(path)) return new FileNode(FileNodeKind.Directory, 0, 0, false);
-            if (File.Exists(path)) return new FileNode(FileNodeKind.RegularFile, 0, 0, false);
-            return new FileNode(FileNodeKind.Missing, 0, 0, false);
+            return Managed(path);
         }
 
         /// <summary>A short phrase for a kind that is not a regular file, e.g. "is a named pipe (FIFO)".</summary>
@@ -101,9 +99,7 @@ namespace DeltaInterpolator.Core.IO
             if (Stat(name, status) != 0)
             {
                 // Missing, or not reachable (permissions): the managed calls decide what to report.
-                return Directory.Exists(path) ? new FileNode(FileNodeKind.Directory, 0, 0, false)
-                    : File.Exists(path) ? new FileNode(FileNodeKind.RegularFile, 0, 0, false)
-                    : new FileNode(FileNodeKind.Missing, 0, 0, false);
+                return Managed(path);
             }
 
             int type = BitConverter.ToInt32(status, ModeOffset) & TypeMask;
@@ -123,6 +119,14 @@ namespace DeltaInterpolator.Core.IO
             bool identity = Environment.Version.Major >= 8 && RuntimeInformation.FrameworkDescription.StartsWith(".NET", StringComparison.Ordinal)
                 && !RuntimeInformation.FrameworkDescription.StartsWith(".NET Framework", StringComparison.Ordinal);
             return new FileNode(kind, identity ? BitConverter.ToInt64(status, DeviceOffset) : 0, identity ? BitConverter.ToInt64(status, InodeOffset) : 0, identity);
+        }
+
+        // The managed answer, without identity: a directory, a file (taken as regular) or nothing.
+        private static FileNode Managed(string path)
+        {
+            if (Directory.Exists(path)) return new FileNode(FileNodeKind.Directory, 0, 0, false);
+            if (File.Exists(path)) return new FileNode(FileNodeKind.RegularFile, 0, 0, false);
+            return new FileNode(FileNodeKind.Missing, 0, 0, false);
         }
 
         [DllImport("libSystem.Native", EntryPoint = "SystemNative_Stat")]

@@ -1,8 +1,6 @@
 using System;
-using System.Collections.Generic;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Kinematics;
-using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Inference

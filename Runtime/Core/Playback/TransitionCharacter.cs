@@ -1,6 +1,5 @@
 using System;
 using DeltaInterpolator.Core.Characters;
-using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Rotations;
 using DeltaInterpolator.Core.Scheduling;
 

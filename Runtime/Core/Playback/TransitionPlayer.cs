@@ -1,12 +1,9 @@
 using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Characters;
 using System;
-using System.Collections.Generic;
-using System.Threading;
 using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
 using DeltaInterpolator.Core.Inference;
-using DeltaInterpolator.Core.Rotations;
 
 namespace DeltaInterpolator.Core.Playback
 {

@@ -5,7 +5,6 @@ using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Core.Clips;
 using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Retargeting;
-using DeltaInterpolator.Core.Skeletons;
 
 namespace DeltaInterpolator.Core.Workflows
 {

@@ -1,4 +1,3 @@
-using DeltaInterpolator.Core.Characters;
 using System;
 using System.Globalization;
 using DeltaInterpolator.Core.Baking;

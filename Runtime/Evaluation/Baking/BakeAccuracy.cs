@@ -1,6 +1,5 @@
 using System;
 using DeltaInterpolator.Core.Kinematics;
-using DeltaInterpolator.Core;
 using DeltaInterpolator.Core.Baking;
 using DeltaInterpolator.Evaluation.Metrics;
 using DeltaInterpolator.Core.Rotations;
