@@ -71,6 +71,7 @@ namespace DeltaInterpolator.Timeline
                     layer = NeuralBlendLayer.Create(animator!, settings!);
                     var timings = new List<TrackClipTiming>();
                     var clips = new List<AnimationClip?>();
+                    bool rootTransforms = false;
                     foreach (TimelineClip clip in GetClips())
                     {
                         var playable = clip.asset as AnimationPlayableAsset;
@@ -79,11 +80,16 @@ namespace DeltaInterpolator.Timeline
                         // overrides the source clip's Loop Time unless set to UseSourceAsset).
                         bool loops = playable != null && animation != null && (playable.loop == AnimationPlayableAsset.LoopMode.On
                             || (playable.loop == AnimationPlayableAsset.LoopMode.UseSourceAsset && animation.isLooping));
-                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration, clip.timeScale, loops));
+                        timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration, clip.timeScale, loops,
+                            Extrapolation(clip.preExtrapolationMode), Extrapolation(clip.postExtrapolationMode)));
                         clips.Add(animation);
+                        // Timeline's own test for a clip that moves the root (AnimationPlayableAsset.HasRootTransforms, less the internal hasRootMotion).
+                        rootTransforms |= animation != null && !animation.empty && (animation.hasGenericRootTransform || animation.hasMotionCurves || animation.hasRootCurves);
                     }
 
-                    layer.Build(timings, clips);
+                    // A custom track's clips play their root motion as the clip playables make it, each from where the character
+                    // stands (Timeline's scene offsets; the offset playables an Animation Track adds are internal): timeline.md.
+                    layer.Build(timings, clips, rootTransforms && animator!.applyRootMotion ? RootTravelMode.SceneOffset : RootTravelMode.None);
                 }
                 catch (Exception e) when (e is InvalidOperationException || e is JointMapException || e is ModelContractException || e is ArgumentException)
                 {
@@ -103,5 +109,15 @@ namespace DeltaInterpolator.Timeline
             ScriptPlayableOutput.Create(graph, name + " (neural blends)").SetSourcePlayable(driver);
             return mixer;
         }
+
+        /// <summary>Timeline's clip extrapolation as Core's (the same five modes).</summary>
+        private static TrackExtrapolation Extrapolation(TimelineClip.ClipExtrapolation mode) => mode switch
+        {
+            TimelineClip.ClipExtrapolation.Hold => TrackExtrapolation.Hold,
+            TimelineClip.ClipExtrapolation.Loop => TrackExtrapolation.Loop,
+            TimelineClip.ClipExtrapolation.PingPong => TrackExtrapolation.PingPong,
+            TimelineClip.ClipExtrapolation.Continue => TrackExtrapolation.Continue,
+            _ => TrackExtrapolation.None,
+        };
     }
 }

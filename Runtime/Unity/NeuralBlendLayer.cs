@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using DeltaInterpolator.Core.Blends;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Inference;
+using Unity.Collections;
 using UnityEngine;
 using UnityEngine.Animations;
 using UnityEngine.Playables;
@@ -44,8 +45,12 @@ namespace DeltaInterpolator.Unity
         private readonly BlendModel _model;
         private readonly PoseBlendBuffers _buffers;
         private readonly double[] _sample;
+        // [0..2] the gap's root velocity in the character's frame (per second), [3] its turn rate about +Y (rad/s), [4] 1 while a gap travels.
+        private NativeArray<double> _rootVelocity = new NativeArray<double>(5, Allocator.Persistent);
         private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
         private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
+        private GapRootTravel?[] _travel = Array.Empty<GapRootTravel?>();
+        private static readonly HashSet<string> s_said = new HashSet<string>();
 
         private NeuralBlendLayer(Animator animator, CharacterRig rig, Transform[] bones, BlendModel model)
         {
@@ -91,17 +96,19 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// Lays out <paramref name="timings"/> and gets each blend and gap between <paramref name="clips"/> (same order) from
-        /// the cache, baking the ones it lacks; a span the model cannot fill is said once in the Console. The bones are put
-        /// back as they were.
+        /// the cache, baking the ones it lacks; a span the model cannot fill, or an extrapolation a gap overrides, is said
+        /// once in the Console. With <paramref name="rootTravel"/> a gap carries root motion (<see cref="GapRootPlan"/>).
+        /// The bones are put back as they were.
         /// </summary>
         /// <exception cref="ArgumentException">Not one clip per timing (<c>clips</c> named), or two clips at one start.</exception>
-        public void Build(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips)
+        public void Build(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips, RootTravelMode rootTravel = RootTravelMode.None)
         {
             if (timings == null) throw new ArgumentNullException(nameof(timings));
             if (clips == null) throw new ArgumentNullException(nameof(clips));
             if (clips.Count != timings.Count) throw new ArgumentException($"{clips.Count} clips for {timings.Count} timings; expected one clip per timing", nameof(clips));
             _layout = TrackLayout.Create(timings);
             _blends = new BlendFrames?[_layout.Spans.Count];
+            _travel = new GapRootTravel?[_layout.Spans.Count];
             double[] saved = UnityPoses.Read(_bones, 0);
             try
             {
@@ -110,8 +117,23 @@ namespace DeltaInterpolator.Unity
                     TrackSpan span = _layout.Spans[s];
                     AnimationClip? from = clips[span.From], to = clips[span.To];
                     if (from == null || to == null) continue;
-                    _blends[s] = s_cache.Get(_model, _rig, span, new AnimationClipPoses(from, _animator.gameObject, _bones), new AnimationClipPoses(to, _animator.gameObject, _bones),
-                        warning => Debug.LogWarning($"{_animator.name}: {warning}", _animator));
+                    if (span.ExtrapolationOverridden != null && s_said.Add($"{_animator.GetInstanceID()}|{from.name}|{to.name}|{span.Start}|{span.ExtrapolationOverridden}"))
+                    {
+                        Debug.LogWarning($"{_animator.name}: gap {from.name} → {to.name} at {span.Start:0.###}–{span.End:0.###} s: {span.ExtrapolationOverridden}", _animator);
+                    }
+
+                    var fromPoses = new AnimationClipPoses(from, _animator.gameObject, _bones);
+                    var toPoses = new AnimationClipPoses(to, _animator.gameObject, _bones);
+                    Action<string> warn = warning => Debug.LogWarning($"{_animator.name}: {warning}", _animator);
+                    if (span.Kind == TrackSpanKind.Gap && rootTravel != RootTravelMode.None)
+                    {
+                        _travel[s] = GapRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, RootPlacement.Identity, out BlendFrames frames, warn);
+                        _blends[s] = frames;
+                    }
+                    else
+                    {
+                        _blends[s] = s_cache.Get(_model, _rig, span, fromPoses, toPoses, warn);
+                    }
                 }
             }
             finally
@@ -128,7 +150,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>The mixer: an animation job with <paramref name="inputCount"/> inputs, mixed by their weights (Timeline sets them) before the blend pose is laid over.</summary>
         public AnimationScriptPlayable CreatePlayable(PlayableGraph graph, int inputCount)
         {
-            var job = new TrackBlendJob { Bones = _buffers.Bones, Pose = _buffers.Pose, Shown = _buffers.Shown, Weight = _buffers.Weight };
+            var job = new TrackBlendJob { Bones = _buffers.Bones, Pose = _buffers.Pose, Shown = _buffers.Shown, Weight = _buffers.Weight, RootVelocity = _rootVelocity };
             AnimationScriptPlayable playable = AnimationScriptPlayable.Create(graph, job, inputCount);
             playable.SetProcessInputs(true);
             return playable;
@@ -136,16 +158,30 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// What the mixer shows at track time <paramref name="time"/>: inside a blend or gap the model fills, its cached
-        /// pose (read between model frames as a bake is read back); elsewhere the clips as Timeline mixes them.
+        /// pose (read between model frames as a bake is read back) — in a gap with root travel, the pose over the root
+        /// placed there and the root's velocity for the job to hand the Animator; elsewhere the clips as Timeline mixes them.
         /// </summary>
         public void Evaluate(double time)
         {
             TrackMoment moment = _layout.Locate(time);
             BlendFrames? frames = moment.Kind == TrackMomentKind.Span ? _blends[moment.Span] : null;
+            _rootVelocity[4] = 0;
             if (frames == null || !frames.Sample(moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3)))
             {
                 _buffers.Weight[0] = 0;
                 return;
+            }
+
+            GapRootTravel? travel = _travel[moment.Span];
+            if (travel != null && travel.Mode != RootTravelMode.None)
+            {
+                travel.InPlace(_rig, moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3, 4));
+                travel.Velocity(moment.Fraction, _layout.Spans[moment.Span].Duration, out double x, out double z, out double yawRate);
+                _rootVelocity[0] = x;
+                _rootVelocity[1] = 0;
+                _rootVelocity[2] = z;
+                _rootVelocity[3] = yawRate;
+                _rootVelocity[4] = 1;
             }
 
             _sample.AsSpan().CopyTo(_buffers.Pose.AsSpan());
@@ -153,6 +189,10 @@ namespace DeltaInterpolator.Unity
         }
 
         /// <summary>Frees the job's buffers (the graph owns the playable).</summary>
-        public void Dispose() => _buffers.Dispose();
+        public void Dispose()
+        {
+            _buffers.Dispose();
+            if (_rootVelocity.IsCreated) _rootVelocity.Dispose();
+        }
     }
 }

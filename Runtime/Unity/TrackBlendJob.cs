@@ -1,6 +1,7 @@
 using System;
 using DeltaInterpolator.Core.Playback;
 using Unity.Collections;
+using UnityEngine;
 using UnityEngine.Animations;
 
 namespace DeltaInterpolator.Unity
@@ -10,7 +11,9 @@ namespace DeltaInterpolator.Unity
     /// Animation Track) are mixed into the stream before it runs; where a blend or gap shows the model's in-between,
     /// the main thread has put that pose in <see cref="Pose"/> with weight 1 and it replaces the rig's bones
     /// (<see cref="PoseBlend.Apply"/>), elsewhere the weight is 0 and the clips play as they are. Root motion is the
-    /// clips' own (the stream's velocity is left as their mix made it).
+    /// clips' own (the stream's velocity is left as their mix made it), except in a gap whose root travels
+    /// (<see cref="Core.Blends.GapRootTravel"/>): there the main thread's velocity and turn rate replace it, in the
+    /// character's frame as Kinematica writes it (<c>unity-verification.md</c>).
     /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
     internal struct TrackBlendJob : IAnimationJob
@@ -20,8 +23,17 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> Shown;
         public NativeArray<double> Weight;
 
+        /// <summary>[0..2] the gap's root velocity (per second, character's frame), [3] its turn rate about +Y (rad/s), [4] 1 while a gap travels.</summary>
+        [ReadOnly]
+        public NativeArray<double> RootVelocity;
+
         public void ProcessRootMotion(AnimationStream stream)
         {
+            // In a gap no clip plays (or a held extrapolation, whose time stands still): the Animator moves the character by
+            // what is on the stream, so the gap's travel is written there, replacing whatever the clips' mix left.
+            if (RootVelocity[4] == 0) return;
+            stream.velocity = new Vector3((float)RootVelocity[0], (float)RootVelocity[1], (float)RootVelocity[2]);
+            stream.angularVelocity = new Vector3(0, (float)RootVelocity[3], 0);
         }
 
         public void ProcessAnimation(AnimationStream stream)

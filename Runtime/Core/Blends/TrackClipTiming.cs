@@ -5,7 +5,8 @@ namespace DeltaInterpolator.Core.Blends
     /// <summary>
     /// Where one clip sits on a track, as Timeline places it: its start and duration on the track, where in its
     /// animation it starts (clip-in) and that animation's length, all in seconds; how fast it plays (Timeline's clip
-    /// speed) and whether its animation loops (then the animation time wraps, as Timeline's clip playable wraps it).
+    /// speed) and whether its animation loops (then the animation time wraps, as Timeline's clip playable wraps it); and how
+    /// it plays before and after its own time (Timeline's pre- and post-extrapolation).
     /// </summary>
     public readonly struct TrackClipTiming
     {
@@ -16,13 +17,28 @@ namespace DeltaInterpolator.Core.Blends
         /// <param name="animationLength">The animation's own length (&gt; 0).</param>
         /// <param name="speed">Animation seconds per track second (Timeline's clip speed, <c>TimelineClip.timeScale</c>; &gt; 0).</param>
         /// <param name="loops">Whether the animation wraps at its end (a looping clip) rather than holding its last frame.</param>
-        public TrackClipTiming(double start, double duration, double clipIn, double animationLength, double speed = 1, bool loops = false)
+        /// <param name="preExtrapolation">How the clip plays before its start (<c>TimelineClip.preExtrapolationMode</c>).</param>
+        /// <param name="postExtrapolation">How the clip plays after its end (<c>TimelineClip.postExtrapolationMode</c>).</param>
+        public TrackClipTiming(double start, double duration, double clipIn, double animationLength, double speed = 1, bool loops = false,
+            TrackExtrapolation preExtrapolation = TrackExtrapolation.None, TrackExtrapolation postExtrapolation = TrackExtrapolation.None)
         {
             if (!(start >= 0) || double.IsInfinity(start)) throw new ArgumentOutOfRangeException(nameof(start), start, "expected a clip start of at least 0 seconds");
             if (!(duration > 0) || double.IsInfinity(duration)) throw new ArgumentOutOfRangeException(nameof(duration), duration, "expected a clip duration above 0 seconds");
             if (!(clipIn >= 0) || double.IsInfinity(clipIn)) throw new ArgumentOutOfRangeException(nameof(clipIn), clipIn, "expected a clip-in of at least 0 seconds");
             if (!(animationLength > 0) || double.IsInfinity(animationLength)) throw new ArgumentOutOfRangeException(nameof(animationLength), animationLength, "expected an animation length above 0 seconds");
             if (!(speed > 0) || double.IsInfinity(speed)) throw new ArgumentOutOfRangeException(nameof(speed), speed, "expected a clip speed above 0 (1: as authored)");
+            if (preExtrapolation < TrackExtrapolation.None || preExtrapolation > TrackExtrapolation.Continue)
+            {
+                throw new ArgumentOutOfRangeException(nameof(preExtrapolation), preExtrapolation, "expected None, Hold, Loop, PingPong or Continue, as Timeline's clip extrapolation");
+            }
+
+            if (postExtrapolation < TrackExtrapolation.None || postExtrapolation > TrackExtrapolation.Continue)
+            {
+                throw new ArgumentOutOfRangeException(nameof(postExtrapolation), postExtrapolation, "expected None, Hold, Loop, PingPong or Continue, as Timeline's clip extrapolation");
+            }
+
+            PreExtrapolation = preExtrapolation;
+            PostExtrapolation = postExtrapolation;
             Start = start;
             Duration = duration;
             ClipIn = clipIn;
@@ -51,6 +67,44 @@ namespace DeltaInterpolator.Core.Blends
 
         /// <summary>Whether the animation wraps at its end.</summary>
         public bool Loops { get; }
+
+        /// <summary>How the clip plays before its start.</summary>
+        public TrackExtrapolation PreExtrapolation { get; }
+
+        /// <summary>How the clip plays after its end.</summary>
+        public TrackExtrapolation PostExtrapolation { get; }
+
+        /// <summary>
+        /// The animation's time at track time <paramref name="trackTime"/> outside the clip, played by
+        /// <paramref name="mode"/> as Timeline plays it: the time since the clip's start extrapolated over the clip's
+        /// duration (<c>TimelineClip.ToLocalTime</c> → <c>GetExtrapolatedTime</c>, Timeline 1.8.10
+        /// <c>Runtime/TimelineClip.cs:608-626, 767-810</c>), then at the clip's speed from its clip-in, wrapped into the
+        /// animation when it loops (before its first frame too) and held at its ends otherwise, as the clip's playable plays it.
+        /// </summary>
+        public double ExtrapolatedTime(double trackTime, TrackExtrapolation mode)
+        {
+            double time = trackTime - Start, duration = Duration;
+            switch (mode)
+            {
+                case TrackExtrapolation.Loop:
+                    if (time < 0) time = duration - (-time % duration);
+                    else if (time > duration) time %= duration;
+                    break;
+                case TrackExtrapolation.Hold:
+                    if (time < 0) time = 0;
+                    else if (time > duration) time = duration;
+                    break;
+                case TrackExtrapolation.PingPong:
+                    time = time < 0 ? duration * 2 - (-time % (duration * 2)) : time % (duration * 2);
+                    time = duration - Math.Abs(time - duration);
+                    break;
+            }
+
+            double unwrapped = ClipIn + time * Speed;
+            if (!Loops) return Math.Max(0, Math.Min(AnimationLength, unwrapped));
+            double wrapped = unwrapped % AnimationLength;
+            return wrapped < 0 ? wrapped + AnimationLength : wrapped;
+        }
 
         /// <summary>
         /// The animation's time at track time <paramref name="trackTime"/> as Timeline plays the clip there: clip-in plus

@@ -73,7 +73,11 @@ namespace DeltaInterpolator.Core.Blends
             return new TrackLayout(copy, order, spans.ToArray());
         }
 
-        /// <summary>What plays at track time <paramref name="time"/>: a span when it lies inside one (its end belongs to the clip after it), else the clip that covers it, else nothing.</summary>
+        /// <summary>
+        /// What plays at track time <paramref name="time"/>: a span when it lies inside one (its end belongs to the clip after
+        /// it; a gap is the model's whatever extrapolation borders it, see <see cref="TrackSpan.ExtrapolationOverridden"/>),
+        /// else the clip that covers it, else before the first clip or after the last that clip's extrapolation, else nothing.
+        /// </summary>
         public TrackMoment Locate(double time)
         {
             for (int s = 0; s < _spans.Length; s++)
@@ -87,6 +91,35 @@ namespace DeltaInterpolator.Core.Blends
             {
                 TrackClipTiming clip = _clips[_order[k]];
                 if (time >= clip.Start && time <= clip.End) return new TrackMoment(TrackMomentKind.Clip, _order[k], clip.LocalTime(time), -1, 0);
+            }
+
+            // Outside every clip and span: before the first clip (from time 0, Timeline's first pre-extrapolation) and after the
+            // clip that ends last, their extrapolation plays as on an Animation Track (Timeline 1.8.10
+            // Runtime/Utilities/Extrapolation.cs:28-49, Runtime/TimelineClip.cs:717-731).
+            if (_order.Length > 0)
+            {
+                TrackClipTiming first = _clips[_order[0]];
+                if (time < first.Start)
+                {
+                    if (time >= 0 && first.PreExtrapolation != TrackExtrapolation.None)
+                    {
+                        return new TrackMoment(TrackMomentKind.Clip, _order[0], first.ExtrapolatedTime(time, first.PreExtrapolation), -1, 0, first.PreExtrapolation);
+                    }
+                }
+                else
+                {
+                    int last = _order[0];
+                    for (int k = 1; k < _order.Length; k++)
+                    {
+                        if (_clips[_order[k]].End >= _clips[last].End) last = _order[k];
+                    }
+
+                    TrackClipTiming clip = _clips[last];
+                    if (time > clip.End && clip.PostExtrapolation != TrackExtrapolation.None)
+                    {
+                        return new TrackMoment(TrackMomentKind.Clip, last, clip.ExtrapolatedTime(time, clip.PostExtrapolation), -1, 0, clip.PostExtrapolation);
+                    }
+                }
             }
 
             return new TrackMoment(TrackMomentKind.None, -1, 0, -1, 0);

@@ -3,8 +3,9 @@ namespace DeltaInterpolator.Core.Blends
     /// <summary>What a track plays at one time (<see cref="TrackLayout.Locate"/>).</summary>
     public readonly struct TrackMoment
     {
-        internal TrackMoment(TrackMomentKind kind, int clip, double localTime, int span, double fraction)
+        internal TrackMoment(TrackMomentKind kind, int clip, double localTime, int span, double fraction, TrackExtrapolation extrapolation = TrackExtrapolation.None)
         {
+            Extrapolation = extrapolation;
             Kind = kind;
             Clip = clip;
             LocalTime = localTime;
@@ -18,7 +19,10 @@ namespace DeltaInterpolator.Core.Blends
         /// <summary>The clip playing alone (for <see cref="TrackMomentKind.Clip"/>), else −1.</summary>
         public int Clip { get; }
 
-        /// <summary>Its animation time.</summary>
+        /// <summary>None inside the clip; before its start or after its end, the extrapolation that plays it there.</summary>
+        public TrackExtrapolation Extrapolation { get; }
+
+        /// <summary>Its animation time (extrapolated outside the clip).</summary>
         public double LocalTime { get; }
 
         /// <summary>The span's index in <see cref="TrackLayout.Spans"/> (for <see cref="TrackMomentKind.Span"/>), else −1.</summary>
@@ -31,10 +35,10 @@ namespace DeltaInterpolator.Core.Blends
     /// <summary>What kind of moment a <see cref="TrackMoment"/> is.</summary>
     public enum TrackMomentKind
     {
-        /// <summary>Before the first clip or after the last: the track plays nothing (as an Animation Track without extrapolation).</summary>
+        /// <summary>Before the first clip or after the last where that clip has no extrapolation: the track plays nothing (as an Animation Track).</summary>
         None,
 
-        /// <summary>One clip plays alone, as on an Animation Track.</summary>
+        /// <summary>One clip plays alone, as on an Animation Track: inside it, or before the first clip or after the last by its extrapolation.</summary>
         Clip,
 
         /// <summary>Inside a blend or gap.</summary>

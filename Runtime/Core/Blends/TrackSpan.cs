@@ -19,6 +19,14 @@ namespace DeltaInterpolator.Core.Blends
             FromTime = fromClip.LocalTime(start);
             ToTime = toClip.LocalTime(end);
             CrossfadeReason = crossfadeReason;
+            // Timeline fills time between two clips with the first one's post-extrapolation, or, only when that is None,
+            // the second one's pre-extrapolation (Timeline 1.8.10 Runtime/Utilities/Extrapolation.cs:28-80).
+            Extrapolation = kind != TrackSpanKind.Gap ? TrackExtrapolation.None
+                : fromClip.PostExtrapolation != TrackExtrapolation.None ? fromClip.PostExtrapolation : toClip.PreExtrapolation;
+            bool fromSide = fromClip.PostExtrapolation != TrackExtrapolation.None;
+            ExtrapolationOverridden = Extrapolation == TrackExtrapolation.Loop || Extrapolation == TrackExtrapolation.PingPong || Extrapolation == TrackExtrapolation.Continue
+                ? $"clip {(fromSide ? from : to)}'s {(fromSide ? "post" : "pre")}-extrapolation is {Extrapolation}, which an Animation Track would play in the gap, but the model's in-between from clip {from}'s last frame to clip {to}'s first plays there; expected Hold or None beside a gap on a neural track (the same result, without this warning)"
+                : null;
         }
 
         /// <summary>Blend (overlap) or gap.</summary>
@@ -56,5 +64,18 @@ namespace DeltaInterpolator.Core.Blends
         /// Timeline's crossfade plays; null for a span the model fills.
         /// </summary>
         public string? CrossfadeReason { get; }
+
+        /// <summary>
+        /// What an Animation Track would play in this gap: the first clip's post-extrapolation, or, when that is None, the
+        /// second clip's pre-extrapolation (None for a blend). The neural track plays its in-between there whatever it is.
+        /// </summary>
+        public TrackExtrapolation Extrapolation { get; }
+
+        /// <summary>
+        /// Why the gap's in-between overrides what the user set (a Loop, PingPong or Continue that would fill the gap on an
+        /// Animation Track), to be said once; null when the gap's extrapolation is Hold or None (the defaults, which mean the
+        /// same as the in-between: nothing of its own plays there).
+        /// </summary>
+        public string? ExtrapolationOverridden { get; }
     }
 }

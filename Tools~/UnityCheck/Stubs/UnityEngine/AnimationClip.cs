@@ -14,5 +14,15 @@ namespace UnityEngine
         public void SetCurve(string relativePath, Type type, string propertyName, AnimationCurve curve) => throw null!;
 
         public void SampleAnimation(GameObject go, float time) => throw null!;
+
+        // AnimationClip.bindings.cs:86-114
+        public bool empty => throw null!;
+
+        //: what Timeline's AnimationPlayableAsset.HasRootTransforms reads (its fourth, hasRootMotion, is internal)
+        public bool hasGenericRootTransform => throw null!;
+
+        public bool hasMotionCurves => throw null!;
+
+        public bool hasRootCurves => throw null!;
     }
 }
