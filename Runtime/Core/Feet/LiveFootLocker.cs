@@ -34,6 +34,8 @@ namespace DeltaInterpolator.Core.Feet
     /// brings the other down on the target's footprint; a held foot's toe never goes more than 1 % of a leg below
     /// its planted height (<see cref="LegPinning"/>'s toe floor); a target beyond the leg's reach
     /// (<see cref="FootLockSettings.MaxReach"/>) releases the joint instead of stretching the leg.</para>
+    /// <para><b>Planned.</b> Once the whole span is known (<see cref="PlanSpan"/>: the network's frames all decoded) the
+    /// contacts above give way to a bake's plan of the span; see that method.</para>
     /// <para>Times are seconds, so the same settings work at any frame rate. Allocation-free after construction;
     /// one instance per character, not thread-safe.</para>
     /// </remarks>
