@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Benchmarks
     /// The per-frame cost of foot locking for 1, 16 and 64 characters of LaFAN1's 22 joints, every character with
     /// both feet planted on every frame (the costliest case: FK of the frame and two-bone IK of both legs, toe and
     /// heel held): <see cref="Frame"/> is a bake's (<see cref="FootLocker.LockFrame"/>; planning, once per bake, not
-    /// part of it), <see cref="PlaybackFrame"/> the component's (<see cref="LiveFootLocker.LockPose(double, ReadOnlySpan{double}, Span{double})"/>: contact
+    /// part of it), <see cref="PlaybackFrame"/> the component's pose by pose (<see cref="LiveFootLocker.LockPose(double, ReadOnlySpan{double}, Span{double})"/>: contact
     /// labels, FK and IK of the pose shown; a new transition every 58 frames included). Divide by Characters for the
     /// per-character cost; both must allocate 0 B.
     /// <code>dotnet run -c Release --project Tools~/Benchmarks -- --filter '*FootLockBenchmarks*'</code>
@@ -27,6 +27,7 @@ namespace DeltaInterpolator.Benchmarks
         private double[][] _rotations = null!;
         private int _frame;
         private readonly float[] _planted = { 0.9f, 0.9f, 0.9f, 0.9f };
+        private static readonly int[] SpanKeys = { 0, Frames - 1 };
 
         /// <summary>Characters locked per rendered frame.</summary>
         [Params(1, 16, 64)]
@@ -104,6 +105,18 @@ namespace DeltaInterpolator.Benchmarks
                 }
             }
 
+            BeginTransitions(planned: true);
+            for (int f = 1; f < Frames - 1; f++)
+            {
+                MotionClip clip = _clips[0];
+                Array.Copy(clip.LocalRotations, f * j * 4, _rotations[0], 0, 4 * j);
+                _live[0].LockPose(f / 30.0, clip.LocalPositions.AsSpan(f * j * 3, 3), _rotations[0]);
+                for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
+                {
+                    if (_live[0].LockWeight(channel) <= 0) throw new InvalidOperationException($"planned playback frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
+                }
+            }
+
             BeginTransitions();
 
             for (int f = 1; f < Frames - 1; f++)
@@ -150,13 +163,34 @@ namespace DeltaInterpolator.Benchmarks
             }
         }
 
-        private void BeginTransitions()
+        /// <summary>
+        /// <see cref="PlaybackFrame"/> with each transition's span planned as a bake plans it (<see cref="LiveFootLocker.PlanSpan"/>,
+        /// as the component does once the network's frames are decoded): the planning, once per transition, included.
+        /// </summary>
+        [Benchmark]
+        public void PlaybackFramePlanned()
+        {
+            _frame = _frame % (Frames - 2) + 1;
+            if (_frame == 1) BeginTransitions(planned: true);
+            for (int c = 0; c < _live.Length; c++)
+            {
+                MotionClip clip = _clips[c];
+                int j = clip.Skeleton.JointCount;
+                double[] pose = _rotations[c];
+                Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
+                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose);
+            }
+        }
+
+        private void BeginTransitions(bool planned = false)
         {
             for (int c = 0; c < _live.Length; c++)
             {
                 MotionClip clip = _clips[c];
                 int j = clip.Skeleton.JointCount, last = Frames - 1;
                 _live[c].Begin(clip.LocalPositions.AsSpan(0, 3), clip.LocalRotations.AsSpan(0, 4 * j), clip.LocalPositions.AsSpan(last * j * 3, 3), clip.LocalRotations.AsSpan(last * j * 4, 4 * j), 0, last / 30.0);
+                // The clip is the span: its first frame the start pose, its last the target.
+                if (planned) _live[c].PlanSpan(clip, SpanKeys, 0, null);
             }
         }
 

@@ -34,10 +34,12 @@ namespace DeltaInterpolator.Core.Feet
     /// brings the other down on the target's footprint; a held foot's toe never goes more than 1 % of a leg below
     /// its planted height (<see cref="LegPinning"/>'s toe floor); a target beyond the leg's reach
     /// (<see cref="FootLockSettings.MaxReach"/>) releases the joint instead of stretching the leg.</para>
+    /// <para><b>Planned.</b> Once the whole span is known (<see cref="PlanSpan"/>: the network's frames all decoded) the
+    /// contacts above give way to a bake's plan of the span; see that method.</para>
     /// <para>Times are seconds, so the same settings work at any frame rate. Allocation-free after construction;
     /// one instance per character, not thread-safe.</para>
     /// </remarks>
-    public sealed class LiveFootLocker
+    public sealed partial class LiveFootLocker
     {
         private const int Channels = FootLocker.ChannelCount;
 
@@ -87,6 +89,9 @@ namespace DeltaInterpolator.Core.Feet
             _settings = settings ?? FootLockSettings.ForPlayback();
             _settings.Validate();
             _pinning = new LegPinning(rig); // checks the leg chains
+            // Spans known whole are planned with the bake's settings: with the frames after a touch-down known, a contact
+            // need not be taken early or loosely, as one decided pose by pose must (ForPlayback).
+            _planner = new FootLocker(rig);
             Skeleton s = rig.Skeleton;
             FootLocker.ChannelJoints(rig, _channelJoint);
             for (int side = 0; side < 2; side++)
@@ -139,6 +144,7 @@ namespace DeltaInterpolator.Core.Feet
             _startTime = startTime;
             _targetTime = targetTime;
             _previousTime = startTime;
+            _planned = _lockedLive = false;
             Array.Copy(_startSpot, _previous, _previous.Length);
             double enter = _settings.EnterHeight * leg;
             for (int c = 0; c < Channels; c++)
@@ -246,6 +252,8 @@ namespace DeltaInterpolator.Core.Feet
                 any |= w > 0;
             }
 
+            if (_planned) any = ShowPlan(time, ground, dt);
+            else _lockedLive |= dt > 0;
             _previousTime = Math.Max(time, _previousTime);
             if (!any) return;
             for (int side = 0; side < 2; side++)

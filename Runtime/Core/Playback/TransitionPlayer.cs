@@ -99,7 +99,7 @@ namespace DeltaInterpolator.Core.Playback
             _targetRotations = new double[b * 4];
             _shownRotations = new double[b * 4];
             _ease = new EaseIn(_joints);
-            _feet = TransitionFeet.For(map, c.Skeleton);
+            _feet = TransitionFeet.For(map, c.Skeleton, FrameRate);
         }
 
         /// <summary>Reports every request exactly once: when its target pose is shown, or when it is interrupted or cancelled.</summary>
@@ -463,7 +463,7 @@ namespace DeltaInterpolator.Core.Playback
 
             if (_ease.Show(request, a, f, decoded >= need)) HeldFrames++;
             // Feet after the SLERP → network ease-in, on the pose about to be shown (model space).
-            if (_feet != null) _feet.LockAndShow(time, _ease.Root, _ease.Rotations, request.ContactsOf(a + (f < 0.5 ? 0 : 1)), request.Transition.ContactThreshold, _poseRoot, _poseRotations);
+            if (_feet != null) _feet.LockAndShow(time, request, a, f, _ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
             else _map.ToCharacter(_ease.Root, _ease.Rotations, _poseRoot, _poseRotations);
             double blendIn = Math.Min(_settings.BlendInSeconds, _duration);
             double w = blendIn > 0 ? SmoothStep(Math.Max(0, s) / blendIn) : 1;
