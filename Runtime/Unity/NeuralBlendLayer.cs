@@ -49,7 +49,7 @@ namespace DeltaInterpolator.Unity
         private NativeArray<double> _rootVelocity = new NativeArray<double>(5, Allocator.Persistent);
         private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
         private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
-        private GapRootTravel?[] _travel = Array.Empty<GapRootTravel?>();
+        private SpanRootTravel?[] _travel = Array.Empty<SpanRootTravel?>();
         private static readonly HashSet<string> s_said = new HashSet<string>();
 
         private NeuralBlendLayer(Animator animator, CharacterRig rig, Transform[] bones, BlendModel model)
@@ -97,7 +97,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>
         /// Lays out <paramref name="timings"/> and gets each blend and gap between <paramref name="clips"/> (same order) from
         /// the cache, baking the ones it lacks; a span the model cannot fill, or an extrapolation a gap overrides, is said
-        /// once in the Console. With <paramref name="rootTravel"/> a gap carries root motion (<see cref="GapRootPlan"/>).
+        /// once in the Console. With <paramref name="rootTravel"/> a gap carries root motion (<see cref="SpanRootPlan"/>).
         /// The bones are put back as they were.
         /// </summary>
         /// <exception cref="ArgumentException">Not one clip per timing (<c>clips</c> named), or two clips at one start.</exception>
@@ -108,7 +108,7 @@ namespace DeltaInterpolator.Unity
             if (clips.Count != timings.Count) throw new ArgumentException($"{clips.Count} clips for {timings.Count} timings; expected one clip per timing", nameof(clips));
             _layout = TrackLayout.Create(timings);
             _blends = new BlendFrames?[_layout.Spans.Count];
-            _travel = new GapRootTravel?[_layout.Spans.Count];
+            _travel = new SpanRootTravel?[_layout.Spans.Count];
             double[] saved = UnityPoses.Read(_bones, 0);
             try
             {
@@ -127,7 +127,7 @@ namespace DeltaInterpolator.Unity
                     Action<string> warn = warning => Debug.LogWarning($"{_animator.name}: {warning}", _animator);
                     if (span.Kind == TrackSpanKind.Gap && rootTravel != RootTravelMode.None)
                     {
-                        _travel[s] = GapRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, RootPlacement.Identity, out BlendFrames frames, warn);
+                        _travel[s] = SpanRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, RootPlacement.Identity, out BlendFrames frames, warn);
                         _blends[s] = frames;
                     }
                     else
@@ -172,7 +172,7 @@ namespace DeltaInterpolator.Unity
                 return;
             }
 
-            GapRootTravel? travel = _travel[moment.Span];
+            SpanRootTravel? travel = _travel[moment.Span];
             if (travel != null && travel.Mode != RootTravelMode.None)
             {
                 travel.InPlace(_rig, moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3, 4));

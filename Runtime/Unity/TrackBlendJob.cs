@@ -12,7 +12,7 @@ namespace DeltaInterpolator.Unity
     /// the main thread has put that pose in <see cref="Pose"/> with weight 1 and it replaces the rig's bones
     /// (<see cref="PoseBlend.Apply"/>), elsewhere the weight is 0 and the clips play as they are. Root motion is the
     /// clips' own (the stream's velocity is left as their mix made it), except in a gap whose root travels
-    /// (<see cref="Core.Blends.GapRootTravel"/>): there the main thread's velocity and turn rate replace it, in the
+    /// (<see cref="Core.Blends.SpanRootTravel"/>): there the main thread's velocity and turn rate replace it, in the
     /// character's frame as Kinematica writes it (<c>unity-verification.md</c>).
     /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
