@@ -230,6 +230,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
+        public void AnUnchangedRebuildReadsTheCacheAndAnotherMixInBakesAgain()
+        {
+            TrackSpan blend = Blend();
+            var cache = new BlendCache();
+            SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames first);
+            SpanRootTravel again = SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames second);
+            Assert.That(second, Is.SameAs(first), "a rebuilt graph with nothing changed finds the blend");
+            Assert.That(cache.Computed, Is.EqualTo(1));
+            // A mix-in that moves the target key is what the bake reads, so it is a new blend.
+            SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames linear, null, u => u);
+            Assert.That(linear, Is.Not.SameAs(first));
+            Assert.That(cache.Computed, Is.EqualTo(2));
+            Assert.That(again.FrameCount, Is.EqualTo(13));
+        }
+
+        [Test]
         [Retry(3)] // the runtime now and then adds a few KB to this thread's count at a random frame (seen with no GC and with tiering off); bytes our code allocates repeat in every attempt
         public void ReadingTheBlendsTravelAtThePlayheadAllocatesNothing()
         {
