@@ -71,6 +71,7 @@ namespace DeltaInterpolator.Timeline
                     layer = NeuralBlendLayer.Create(animator!, settings!);
                     var timings = new List<TrackClipTiming>();
                     var clips = new List<AnimationClip?>();
+                    var mixIn = new List<AnimationCurve?>();
                     bool rootTransforms = false;
                     foreach (TimelineClip clip in GetClips())
                     {
@@ -83,13 +84,15 @@ namespace DeltaInterpolator.Timeline
                         timings.Add(new TrackClipTiming(clip.start, clip.duration, clip.clipIn, animation != null && animation.length > 0 ? animation.length : clip.duration, clip.timeScale, loops,
                             Extrapolation(clip.preExtrapolationMode), Extrapolation(clip.postExtrapolationMode)));
                         clips.Add(animation);
+                        // A blend's root travel weighs the clips as Timeline does: the second clip by its mix-in curve (timeline.md).
+                        mixIn.Add(clip.mixInCurve);
                         // Timeline's own test for a clip that moves the root (AnimationPlayableAsset.HasRootTransforms, less the internal hasRootMotion).
                         rootTransforms |= animation != null && !animation.empty && (animation.hasGenericRootTransform || animation.hasMotionCurves || animation.hasRootCurves);
                     }
 
                     // A custom track's clips play their root motion as the clip playables make it, each from where the character
                     // stands (Timeline's scene offsets; the offset playables an Animation Track adds are internal): timeline.md.
-                    layer.Build(timings, clips, rootTransforms && animator!.applyRootMotion ? RootTravelMode.SceneOffset : RootTravelMode.None);
+                    layer.Build(timings, clips, rootTransforms && animator!.applyRootMotion ? RootTravelMode.SceneOffset : RootTravelMode.None, mixIn);
                 }
                 catch (Exception e) when (e is InvalidOperationException || e is JointMapException || e is ModelContractException || e is ArgumentException)
                 {

@@ -45,11 +45,11 @@ namespace DeltaInterpolator.Unity
         private readonly BlendModel _model;
         private readonly PoseBlendBuffers _buffers;
         private readonly double[] _sample;
-        // [0..2] the gap's root velocity in the character's frame (per second), [3] its turn rate about +Y (rad/s), [4] 1 while a gap travels.
+        // [0..2] the span's root velocity in the character's frame (per second), [3] its turn rate about +Y (rad/s), [4] 1 while a blend or gap travels.
         private NativeArray<double> _rootVelocity = new NativeArray<double>(5, Allocator.Persistent);
         private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
         private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
-        private GapRootTravel?[] _travel = Array.Empty<GapRootTravel?>();
+        private SpanRootTravel?[] _travel = Array.Empty<SpanRootTravel?>();
         private static readonly HashSet<string> s_said = new HashSet<string>();
 
         private NeuralBlendLayer(Animator animator, CharacterRig rig, Transform[] bones, BlendModel model)
@@ -97,18 +97,22 @@ namespace DeltaInterpolator.Unity
         /// <summary>
         /// Lays out <paramref name="timings"/> and gets each blend and gap between <paramref name="clips"/> (same order) from
         /// the cache, baking the ones it lacks; a span the model cannot fill, or an extrapolation a gap overrides, is said
-        /// once in the Console. With <paramref name="rootTravel"/> a gap carries root motion (<see cref="GapRootPlan"/>).
-        /// The bones are put back as they were.
+        /// once in the Console. With <paramref name="rootTravel"/> a blend or gap carries root motion (<see cref="SpanRootPlan"/>):
+        /// a blend's target is placed where Timeline's mix of its clips' root motion leaves the character, the clips weighted
+        /// by the second clip's mix-in curve (<paramref name="mixIn"/>, Timeline's <c>TimelineClip.mixInCurve</c>; null or a
+        /// null entry: Timeline's default ease). The bones are put back as they were.
         /// </summary>
-        /// <exception cref="ArgumentException">Not one clip per timing (<c>clips</c> named), or two clips at one start.</exception>
-        public void Build(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips, RootTravelMode rootTravel = RootTravelMode.None)
+        /// <exception cref="ArgumentException">Not one clip (or mix-in curve) per timing (<c>clips</c> or <c>mixIn</c> named), or two clips at one start.</exception>
+        public void Build(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips, RootTravelMode rootTravel = RootTravelMode.None,
+            IReadOnlyList<AnimationCurve?>? mixIn = null)
         {
             if (timings == null) throw new ArgumentNullException(nameof(timings));
             if (clips == null) throw new ArgumentNullException(nameof(clips));
             if (clips.Count != timings.Count) throw new ArgumentException($"{clips.Count} clips for {timings.Count} timings; expected one clip per timing", nameof(clips));
+            if (mixIn != null && mixIn.Count != timings.Count) throw new ArgumentException($"{mixIn.Count} mix-in curves for {timings.Count} timings; expected one per timing", nameof(mixIn));
             _layout = TrackLayout.Create(timings);
             _blends = new BlendFrames?[_layout.Spans.Count];
-            _travel = new GapRootTravel?[_layout.Spans.Count];
+            _travel = new SpanRootTravel?[_layout.Spans.Count];
             double[] saved = UnityPoses.Read(_bones, 0);
             try
             {
@@ -125,9 +129,12 @@ namespace DeltaInterpolator.Unity
                     var fromPoses = new AnimationClipPoses(from, _animator.gameObject, _bones);
                     var toPoses = new AnimationClipPoses(to, _animator.gameObject, _bones);
                     Action<string> warn = warning => Debug.LogWarning($"{_animator.name}: {warning}", _animator);
-                    if (span.Kind == TrackSpanKind.Gap && rootTravel != RootTravelMode.None)
+                    if (rootTravel != RootTravelMode.None)
                     {
-                        _travel[s] = GapRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, RootPlacement.Identity, out BlendFrames frames, warn);
+                        // Timeline weighs the second clip by its mix-in curve at the fraction of the overlap, clamped to 0..1 (TimelineClip.EvaluateMixIn).
+                        AnimationCurve? curve = mixIn?[span.To];
+                        Func<double, double>? weight = curve == null ? null : u => Math.Clamp((double)curve.Evaluate((float)u), 0.0, 1.0);
+                        _travel[s] = SpanRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, RootPlacement.Identity, out BlendFrames frames, warn, weight);
                         _blends[s] = frames;
                     }
                     else
@@ -158,7 +165,7 @@ namespace DeltaInterpolator.Unity
 
         /// <summary>
         /// What the mixer shows at track time <paramref name="time"/>: inside a blend or gap the model fills, its cached
-        /// pose (read between model frames as a bake is read back) — in a gap with root travel, the pose over the root
+        /// pose (read between model frames as a bake is read back) — in a blend or gap with root travel, the pose over the root
         /// placed there and the root's velocity for the job to hand the Animator; elsewhere the clips as Timeline mixes them.
         /// </summary>
         public void Evaluate(double time)
@@ -172,7 +179,7 @@ namespace DeltaInterpolator.Unity
                 return;
             }
 
-            GapRootTravel? travel = _travel[moment.Span];
+            SpanRootTravel? travel = _travel[moment.Span];
             if (travel != null && travel.Mode != RootTravelMode.None)
             {
                 travel.InPlace(_rig, moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3, 4));

@@ -11,8 +11,8 @@ namespace DeltaInterpolator.Unity
     /// Animation Track) are mixed into the stream before it runs; where a blend or gap shows the model's in-between,
     /// the main thread has put that pose in <see cref="Pose"/> with weight 1 and it replaces the rig's bones
     /// (<see cref="PoseBlend.Apply"/>), elsewhere the weight is 0 and the clips play as they are. Root motion is the
-    /// clips' own (the stream's velocity is left as their mix made it), except in a gap whose root travels
-    /// (<see cref="Core.Blends.GapRootTravel"/>): there the main thread's velocity and turn rate replace it, in the
+    /// clips' own (the stream's velocity is left as their mix made it), except in a blend or gap whose root travels
+    /// (<see cref="Core.Blends.SpanRootTravel"/>): there the main thread's velocity and turn rate replace it, in the
     /// character's frame as Kinematica writes it (<c>unity-verification.md</c>).
     /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
@@ -23,14 +23,15 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> Shown;
         public NativeArray<double> Weight;
 
-        /// <summary>[0..2] the gap's root velocity (per second, character's frame), [3] its turn rate about +Y (rad/s), [4] 1 while a gap travels.</summary>
+        /// <summary>[0..2] the span's root velocity (per second, character's frame), [3] its turn rate about +Y (rad/s), [4] 1 while a blend or gap travels.</summary>
         [ReadOnly]
         public NativeArray<double> RootVelocity;
 
         public void ProcessRootMotion(AnimationStream stream)
         {
-            // In a gap no clip plays (or a held extrapolation, whose time stands still): the Animator moves the character by
-            // what is on the stream, so the gap's travel is written there, replacing whatever the clips' mix left.
+            // The Animator moves the character by what is on the stream, so the span's travel is written there, replacing what
+            // the clips' mix left: in a gap nothing (or a held extrapolation, whose time stands still), in a blend Timeline's
+            // mix of both clips' root motion — which the travel ends where (its target key was placed there), on the model's path.
             if (RootVelocity[4] == 0) return;
             stream.velocity = new Vector3((float)RootVelocity[0], (float)RootVelocity[1], (float)RootVelocity[2]);
             stream.angularVelocity = new Vector3(0, (float)RootVelocity[3], 0);

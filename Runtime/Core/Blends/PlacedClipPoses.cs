@@ -4,8 +4,8 @@ using DeltaInterpolator.Core.Characters;
 namespace DeltaInterpolator.Core.Blends
 {
     /// <summary>
-    /// A clip's poses moved on the ground by one <see cref="RootPlacement"/> (<see cref="RootPlacement.Move"/>): how a gap's
-    /// target key is put where the second clip's root motion starts the character, in the frame of the first clip's keys.
+    /// A clip's poses moved on the ground by one <see cref="RootPlacement"/> (<see cref="RootPlacement.Move"/>): how a blend's
+    /// or gap's target key is put where the character stands when the span ends, in the frame of the first clip's keys.
     /// Allocation-free per sample.
     /// </summary>
     public sealed class PlacedClipPoses : IClipPoses

@@ -8,7 +8,7 @@ using NUnit.Framework;
 namespace DeltaInterpolator.Tests.OnnxRuntime
 {
     /// <summary>
-    /// Issue 28: a gap carries root motion as the track's clips have it (<see cref="GapRootTravel"/>, <see cref="GapRootPlan"/>),
+    /// Issue 28: a gap carries root motion as the track's clips have it (<see cref="SpanRootTravel"/>, <see cref="SpanRootPlan"/>),
     /// on the Demo's CMU walk and jumps (their hips' travel read as the clips' root motion) and the shipped model: a 0.6 s
     /// gap from the walk's end (3 s) to the jumps (clip-in 0.2 s), 17 missing frames at 30 fps.
     /// </summary>
@@ -48,15 +48,15 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         private static double Distance(RootPlacement a, RootPlacement b) =>
             Math.Max(Math.Max(Math.Abs(a.X - b.X), Math.Abs(a.Z - b.Z)), Math.Abs(Math.IEEERemainder(a.Yaw - b.Yaw, 2 * Math.PI)));
 
-        private static RootPlacement Step(GapRootTravel travel, int k) => travel.Frame(k).StepTo(travel.Frame(k + 1));
+        private static RootPlacement Step(SpanRootTravel travel, int k) => travel.Frame(k).StepTo(travel.Frame(k + 1));
 
         [Test]
         public void WithSceneOffsetsTheGapTravelsAlongTheModelsOwnTrajectory()
         {
             TrackSpan gap = Gap();
-            GapRootTravel travel = GapRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
             Assert.That((frames.Mode, travel.FrameCount, travel.Mode), Is.EqualTo((BlendMode.Model, 19, RootTravelMode.SceneOffset)));
-            RootPlacement[] trajectory = GapRootTravel.Trajectory(_rig, frames);
+            RootPlacement[] trajectory = SpanRootTravel.Trajectory(_rig, frames);
             for (int k = 0; k < trajectory.Length; k++) Assert.That(Distance(travel.Frame(k), trajectory[k]), Is.EqualTo(0), $"frame {k} is the model's own");
 
             // It starts where the walk's root motion leaves the character and ends where the walk's last step, kept up, brings it.
@@ -80,7 +80,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             TrackSpan gap = Gap();
             // The jumps placed 1 unit to the side, 10 ahead (the walk covers 10.4 in 0.6 s) and turned 25° from where the walk leaves the character.
             var arrival = new RootPlacement(1.0, 10.0, 25 * Math.PI / 180);
-            GapRootTravel travel = GapRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
             RootPlacement leaving = Placement(_walk, 3.0);
             RootPlacement walkStep = Placement(_walk, 3.0 - 1 / 30.0).StepTo(leaving);
             RootPlacement jumpsStep = Placement(_jumps, 0.2).StepTo(Placement(_jumps, 0.2 + 1 / 30.0));
@@ -93,7 +93,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(inside, Is.LessThan(0.25 * pace), "inside the gap the step changes smoothly: by under a quarter of the walk's step from one frame to the next (measured 0.08 of 0.58)");
 
             // The model went to the placed target itself: its trajectory ends there within the bake's precision, so the bend is small.
-            RootPlacement[] trajectory = GapRootTravel.Trajectory(_rig, frames);
+            RootPlacement[] trajectory = SpanRootTravel.Trajectory(_rig, frames);
             double bend = 0;
             for (int k = 0; k < trajectory.Length; k++) bend = Math.Max(bend, Distance(travel.Frame(k), trajectory[k]));
             TestContext.WriteLine($"transform offsets: largest bend from the model's trajectory {bend:F4}");
@@ -104,12 +104,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             // The gap baked without root motion: the model's hips go to the jumps' own start, far from where the walk stands.
             TrackSpan gap = Gap();
-            GapRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
-            RootPlacement[] trajectory = GapRootTravel.Trajectory(_rig, frames);
+            SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
+            RootPlacement[] trajectory = SpanRootTravel.Trajectory(_rig, frames);
             var target = trajectory[0].Then(new RootPlacement(-0.3, 2.2, -40 * Math.PI / 180));
             var lastStep = new RootPlacement(0.001, 0.045, 0.002);
             var firstStep = new RootPlacement(-0.002, 0.03, -0.01);
-            GapRootTravel travel = GapRootTravel.Land(trajectory, target, lastStep, firstStep);
+            SpanRootTravel travel = SpanRootTravel.Land(trajectory, target, lastStep, firstStep);
             TestContext.WriteLine($"unplaced model trajectory ends {Distance(trajectory[18], target):F3} from the target");
             Assert.That(Distance(trajectory[18], target), Is.GreaterThan(0.5), "the test's premise: the model's own end is elsewhere");
             Assert.That(Distance(travel.Frame(0), trajectory[0]), Is.EqualTo(0));
@@ -119,7 +119,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             AssertNoJump(travel, lastStep, firstStep, "bent");
 
             // Too short for both steps (3 model frames): it still lands, linearly.
-            GapRootTravel shortGap = GapRootTravel.Land(trajectory.AsSpan(0, 3), target, lastStep, firstStep);
+            SpanRootTravel shortGap = SpanRootTravel.Land(trajectory.AsSpan(0, 3), target, lastStep, firstStep);
             Assert.That(Distance(shortGap.Frame(2), target), Is.LessThan(1e-12));
             Assert.That(Distance(shortGap.Frame(0), trajectory[0]), Is.EqualTo(0));
         }
@@ -130,7 +130,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             TrackSpan gap = Gap();
             var cache = new BlendCache();
             BlendFrames plain = cache.Get(_model, _rig, gap, _walk, _jumps);
-            GapRootTravel travel = GapRootPlan.Bake(cache, _model, _rig, gap, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(cache, _model, _rig, gap, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
             Assert.That(frames, Is.SameAs(plain), "the same bake as without root travel");
             Assert.That(cache.Computed, Is.EqualTo(1));
             Assert.That(travel.Mode, Is.EqualTo(RootTravelMode.None));
@@ -150,7 +150,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             TrackSpan gap = Gap();
             var arrival = new RootPlacement(1.0, 10.0, 25 * Math.PI / 180);
-            GapRootTravel travel = GapRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
             int bones = _rig.Skeleton.JointCount;
             double[] root = new double[3], rotations = new double[4 * bones], moved = new double[3], movedRotations = new double[4 * bones];
             foreach (double fraction in new[] { 0.0, 0.13, 0.5, 0.77, 1.0 })
@@ -183,7 +183,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void ReadingTheTravelAtThePlayheadAllocatesNothing()
         {
             TrackSpan gap = Gap();
-            GapRootTravel travel = GapRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
             double[] root = new double[3], rotations = new double[4 * _rig.Skeleton.JointCount];
             double sum = 0;
             void Frame(int i)
@@ -206,23 +206,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         }
 
         [Test]
-        public void RefusesWhatIsNoGapOrPlacement()
+        public void RefusesWhatIsNoSpanOrPlacement()
         {
-            TrackSpan blend = TrackLayout.Create(new[] { new TrackClipTiming(0, 3.0, 0, 3.0), new TrackClipTiming(2.5, 3.0, 0.2, 401 / 120.0) }).Spans[0];
-            var e = Assert.Throws<ArgumentException>(() => GapRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out _));
+            var e = Assert.Throws<ArgumentException>(() => SpanRootPlan.Bake(new BlendCache(), _model, _rig, default, _walk, _jumps, RootTravelMode.SceneOffset, default, out _));
             Assert.That(e!.ParamName, Is.EqualTo("span"));
-            Assert.That(e.Message, Does.Contain("; expected a gap"));
-            var m = Assert.Throws<ArgumentOutOfRangeException>(() => GapRootPlan.Bake(new BlendCache(), _model, _rig, Gap(), _walk, _jumps, (RootTravelMode)7, default, out _));
+            Assert.That(e.Message, Does.Contain("; expected a blend or gap"));
+            var m = Assert.Throws<ArgumentOutOfRangeException>(() => SpanRootPlan.Bake(new BlendCache(), _model, _rig, Gap(), _walk, _jumps, (RootTravelMode)7, default, out _));
             Assert.That(m!.ParamName, Is.EqualTo("mode"));
             var p = Assert.Throws<ArgumentOutOfRangeException>(() => _ = new PlacedClipPoses(_jumps, _rig, new RootPlacement(double.NaN, 0, 0)));
             Assert.That(p!.ParamName, Is.EqualTo("placement"));
-            var t = Assert.Throws<ArgumentException>(() => GapRootTravel.Follow(new RootPlacement[1]));
+            var t = Assert.Throws<ArgumentException>(() => SpanRootTravel.Follow(new RootPlacement[1]));
             Assert.That(t!.ParamName, Is.EqualTo("trajectory"));
-            Assert.Throws<ArgumentOutOfRangeException>(() => GapRootTravel.None(1));
+            Assert.Throws<ArgumentOutOfRangeException>(() => SpanRootTravel.None(1));
         }
 
         /// <summary>No jump in travel per frame at either end: the gap's first step is the first clip's last, its last the second clip's first. Returns the largest step change inside.</summary>
-        private static double AssertNoJump(GapRootTravel travel, RootPlacement before, RootPlacement after, string what)
+        private static double AssertNoJump(SpanRootTravel travel, RootPlacement before, RootPlacement after, string what)
         {
             int last = travel.FrameCount - 1;
             double worst = Math.Max(Distance(Step(travel, 0), before), Distance(Step(travel, last - 1), after));

@@ -15,6 +15,9 @@ namespace UnityEngine.Timeline
 
         public Object asset { get => throw null!; set => throw null!; }
 
+        // Timeline 1.8.10 Runtime/TimelineClip.cs:446-457 (the blend-in or ease-in weight curve; a broken one is reset to the default)
+        public AnimationCurve mixInCurve { get => throw null!; set => throw null!; }
+
         // Timeline 1.8.10 Runtime/TimelineClip.cs:55-81 (the enum), 677-690 (the modes; their setters are internal)
         public enum ClipExtrapolation
         {

@@ -5,50 +5,50 @@ using DeltaInterpolator.Core.Clips;
 namespace DeltaInterpolator.Core.Blends
 {
     /// <summary>
-    /// Where a gap's root stands at each model frame, so that a gap carries root motion as the track's clips have it: from
-    /// where the first clip's root motion leaves the character to where the second clip's starts it, along the model's
-    /// root trajectory between the first clip's last frame and the second one's first (<see cref="RootTravelMode"/>).
-    /// Placements are in the frame the gap's key poses were sampled in (the first clip's); what an engine applies is
-    /// the step between two of them (<see cref="Velocity"/>), and the pose shown over a travelling root is the model's
-    /// pose with that travel taken out of its root bone (<see cref="InPlace"/>), so that the character's hips stay
-    /// where the model put them.
+    /// Where a blend's or gap's root stands at each model frame, so that the span carries root motion as the track's clips
+    /// have it: from where the first clip's root motion has the character where the span starts to where the character
+    /// stands when it ends (<see cref="SpanRootPlan"/>), along the model's root trajectory between the span's two keys
+    /// (<see cref="RootTravelMode"/>). Placements are in the frame the span's key poses were sampled in (the first clip's);
+    /// what an engine applies is the step between two of them (<see cref="Velocity"/>), and the pose shown over a
+    /// travelling root is the model's pose with that travel taken out of its root bone (<see cref="InPlace"/>), so that
+    /// the character's hips stay where the model put them.
     /// </summary>
     /// <remarks>
     /// <para>Scene offsets: the travel is the model's trajectory itself (<see cref="Follow"/>). Transform offsets: the
-    /// model's trajectory plus a cubic correction in (x, z, yaw) that is 0 at the gap's first frame and makes the second
+    /// model's trajectory plus a cubic correction in (x, z, yaw) that is 0 at the span's first frame and makes the second
     /// frame's step the first clip's last step, the last frame the second clip's placement and the last step the second
     /// clip's first step (<see cref="Land"/>) — a correction, not a rescale: a rescale would scale the first step too,
-    /// and the character would jump in speed where the gap begins.</para>
+    /// and the character would jump in speed where the span begins.</para>
     /// <para>Reading (<see cref="At"/>, <see cref="Velocity"/>, <see cref="InPlace"/>) allocates nothing.</para>
     /// </remarks>
-    public sealed class GapRootTravel
+    public sealed class SpanRootTravel
     {
         private readonly RootPlacement[] _frames;
 
-        private GapRootTravel(RootTravelMode mode, RootPlacement[] frames)
+        private SpanRootTravel(RootTravelMode mode, RootPlacement[] frames)
         {
             Mode = mode;
             _frames = frames;
         }
 
-        /// <summary>How this gap travels.</summary>
+        /// <summary>How this span travels.</summary>
         public RootTravelMode Mode { get; }
 
-        /// <summary>Model frames from the gap's first pose to its last, both included.</summary>
+        /// <summary>Model frames from the span's first pose to its last, both included.</summary>
         public int FrameCount => _frames.Length;
 
         /// <summary>No travel: the clips' hips carry it (today's behaviour for clips without root motion).</summary>
-        public static GapRootTravel None(int frameCount)
+        public static SpanRootTravel None(int frameCount)
         {
-            if (frameCount < 2) throw new ArgumentOutOfRangeException(nameof(frameCount), frameCount, "expected a gap of at least 2 model frames (its two keys)");
-            return new GapRootTravel(RootTravelMode.None, new RootPlacement[frameCount]);
+            if (frameCount < 2) throw new ArgumentOutOfRangeException(nameof(frameCount), frameCount, "expected a span of at least 2 model frames (its two keys)");
+            return new SpanRootTravel(RootTravelMode.None, new RootPlacement[frameCount]);
         }
 
         /// <summary>Scene offsets: the model's root trajectory itself, one placement per model frame.</summary>
-        public static GapRootTravel Follow(ReadOnlySpan<RootPlacement> trajectory)
+        public static SpanRootTravel Follow(ReadOnlySpan<RootPlacement> trajectory)
         {
-            if (trajectory.Length < 2) throw new ArgumentException($"a trajectory of {trajectory.Length} frame(s); expected a gap's frames, its two keys included", nameof(trajectory));
-            return new GapRootTravel(RootTravelMode.SceneOffset, Unwrapped(trajectory));
+            if (trajectory.Length < 2) throw new ArgumentException($"a trajectory of {trajectory.Length} frame(s); expected a span's frames, its two keys included", nameof(trajectory));
+            return new SpanRootTravel(RootTravelMode.SceneOffset, Unwrapped(trajectory));
         }
 
         /// <summary>
@@ -59,10 +59,10 @@ namespace DeltaInterpolator.Core.Blends
         /// <param name="arrival">Where the second clip starts the character (its placement), in the trajectory's frame.</param>
         /// <param name="lastStep">The first clip's step over its last model frame (in the frame of the placement it starts from).</param>
         /// <param name="firstStep">The second clip's step over its first model frame.</param>
-        /// <remarks>A gap of fewer than 4 model frames has no room for both steps: its correction is linear (it lands, without the steps).</remarks>
-        public static GapRootTravel Land(ReadOnlySpan<RootPlacement> trajectory, RootPlacement arrival, RootPlacement lastStep, RootPlacement firstStep)
+        /// <remarks>A span of fewer than 4 model frames has no room for both steps: its correction is linear (it lands, without the steps).</remarks>
+        public static SpanRootTravel Land(ReadOnlySpan<RootPlacement> trajectory, RootPlacement arrival, RootPlacement lastStep, RootPlacement firstStep)
         {
-            if (trajectory.Length < 2) throw new ArgumentException($"a trajectory of {trajectory.Length} frame(s); expected a gap's frames, its two keys included", nameof(trajectory));
+            if (trajectory.Length < 2) throw new ArgumentException($"a trajectory of {trajectory.Length} frame(s); expected a span's frames, its two keys included", nameof(trajectory));
             RootPlacement[] frames = Unwrapped(trajectory);
             int last = frames.Length - 1;
             RootPlacement end = frames[last];
@@ -92,14 +92,14 @@ namespace DeltaInterpolator.Core.Blends
             }
 
             frames[last] = arrival;
-            return new GapRootTravel(RootTravelMode.TransformOffset, frames);
+            return new SpanRootTravel(RootTravelMode.TransformOffset, frames);
         }
 
-        /// <summary>The root placements of a gap's frames (<see cref="BlendFrames.Motion"/> on <paramref name="rig"/>), yaw unwrapped from frame to frame.</summary>
+        /// <summary>The root placements of a span's frames (<see cref="BlendFrames.Motion"/> on <paramref name="rig"/>), yaw unwrapped from frame to frame.</summary>
         public static RootPlacement[] Trajectory(CharacterRig rig, BlendFrames frames)
         {
             if (rig == null) throw new ArgumentNullException(nameof(rig));
-            if (frames?.Motion == null) throw new ArgumentException("a crossfade has no frames; expected a gap's frames (model or SLERP)", nameof(frames));
+            if (frames?.Motion == null) throw new ArgumentException("a crossfade has no frames; expected a span's frames (model or SLERP)", nameof(frames));
             var result = new RootPlacement[frames.Motion.FrameCount];
             var root = new double[3];
             var rotations = new double[4 * rig.Skeleton.JointCount];
@@ -115,7 +115,7 @@ namespace DeltaInterpolator.Core.Blends
         /// <summary>The placement at model frame <paramref name="frame"/>.</summary>
         public RootPlacement Frame(int frame) => _frames[frame];
 
-        /// <summary>The placement at <paramref name="fraction"/> of the gap (0: its start, 1: its end; clamped), linear between model frames as the poses are read.</summary>
+        /// <summary>The placement at <paramref name="fraction"/> of the span (0: its start, 1: its end; clamped), linear between model frames as the poses are read.</summary>
         public RootPlacement At(double fraction)
         {
             Segment(fraction, out int k, out double t);
@@ -124,7 +124,7 @@ namespace DeltaInterpolator.Core.Blends
         }
 
         /// <summary>
-        /// The root's velocity at <paramref name="fraction"/> of a gap of <paramref name="seconds"/>: the step of the model
+        /// The root's velocity at <paramref name="fraction"/> of a span of <paramref name="seconds"/>: the step of the model
         /// frame it lies in, per second, in the root's own frame there (what an engine's root motion takes; Unity's
         /// <c>AnimationStream.velocity</c> is in the character's frame, see <c>unity-verification.md</c>), and its turn rate in radians per second.
         /// </summary>
@@ -140,7 +140,7 @@ namespace DeltaInterpolator.Core.Blends
         }
 
         /// <summary>
-        /// Takes the travel at <paramref name="fraction"/> out of a gap pose's root bone: the pose as it stands over the root
+        /// Takes the travel at <paramref name="fraction"/> out of a span pose's root bone: the pose as it stands over the root
         /// placed there, so that root and pose together show the model's pose where the model put it. No travel: unchanged.
         /// </summary>
         public void InPlace(CharacterRig rig, double fraction, Span<double> rootPosition, Span<double> rootRotation)
