@@ -1,6 +1,8 @@
 #if UNITY_EDITOR
 #nullable enable
+using System;
 using System.Collections.Generic;
+using DeltaInterpolator.Tests.Blends;
 using UnityEngine;
 using UnityEngine.Playables;
 
@@ -23,41 +25,22 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
         /// <summary>Each figure's hips (its root bone), in the same order.</summary>
         public Transform[] Hips = new Transform[0];
 
-        /// <summary>One entry per frame since the director started.</summary>
-        public readonly List<Frame> Frames = new List<Frame>();
+        /// <summary>One entry per frame since <see cref="Director"/> was set.</summary>
+        public readonly List<TrackMotionFrame> Frames = new List<TrackMotionFrame>();
 
         private void LateUpdate()
         {
             if (Director == null) return;
-            var frame = new Frame(Director.time, Figures.Length);
+            var places = new FigurePlace[Figures.Length];
             for (int f = 0; f < Figures.Length; f++)
             {
-                frame.Position[f] = Figures[f].position;
-                frame.Rotation[f] = Figures[f].rotation;
-                frame.HipsPosition[f] = Hips[f].position;
+                Vector3 at = Figures[f].position, hips = Hips[f].position;
+                // The facing about +Y: the angle of the rotated +Z from +Z toward +X.
+                Vector3 forward = Figures[f].rotation * new Vector3(0f, 0f, 1f);
+                places[f] = new FigurePlace(at.x, at.z, Math.Atan2(forward.x, forward.z), hips.x, hips.y, hips.z);
             }
 
-            Frames.Add(frame);
-        }
-
-        /// <summary>The director's time and, per figure, its object's world position and rotation and its hips' world position.</summary>
-        public sealed class Frame
-        {
-            public Frame(double time, int figures)
-            {
-                Time = time;
-                Position = new Vector3[figures];
-                Rotation = new Quaternion[figures];
-                HipsPosition = new Vector3[figures];
-            }
-
-            public double Time { get; }
-
-            public Vector3[] Position { get; }
-
-            public Quaternion[] Rotation { get; }
-
-            public Vector3[] HipsPosition { get; }
+            Frames.Add(new TrackMotionFrame(Director.time, places));
         }
     }
 }
