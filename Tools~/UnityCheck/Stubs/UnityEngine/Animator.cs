@@ -27,6 +27,9 @@ namespace UnityEngine
 
         public bool applyRootMotion { get => throw null!; set => throw null!; }
 
+        // UnityCsReference 6000.0 Modules/Animation/ScriptBindings/Animator.bindings.cs:310-315 (a generic rig with a root motion node, or a humanoid)
+        public bool hasRootMotion => throw null!;
+
         public Vector3 velocity => throw null!;
 
         public Avatar avatar { get => throw null!; set => throw null!; }

@@ -9,6 +9,9 @@ namespace UnityEngine.Playables
 
         public Object GetGenericBinding(Object key) => throw null!;
 
+        // UnityCsReference 6000.0 Modules/Director/ScriptBindings/PlayableDirector.bindings.cs:88-89 (builds the graph if needed and plays it)
+        public void Play() => throw null!;
+
         public void SetGenericBinding(Object key, Object value) => throw null!;
     }
 }
