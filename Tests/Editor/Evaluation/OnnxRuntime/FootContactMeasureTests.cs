@@ -39,7 +39,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         [TestCase(15)]
         [TestCase(30)]
-        public void NineFilesLockedWithTheContactSource(int modelFrames)
+        public void NineFilesLockedWithTheContactSource(int modelFrames) => Measure(Files, modelFrames, "nine files");
+
+        /// <summary>
+        /// The measure over <paramref name="files"/> (paths under the data folder without ".bvh"; "cmu/" files from frame 1
+        /// with frame 0 as the reference, "cmu-more/" files from frame 10, others from frame 0), keys every
+        /// <paramref name="modelFrames"/> model frames; prints the table and asserts only that locking helps.
+        /// </summary>
+        internal static void Measure(string[] files, int modelFrames, string title)
         {
             string lafan = TestEnvironment.RequireLafan1();
             string data = Path.GetDirectoryName(lafan)!;
@@ -48,7 +55,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using Inbetweener model = OnnxRuntimeInbetweener.Load(defaultModel);
             FilledMotionContactClassifier? classifier = Classifier();
             var totals = new Totals();
-            foreach (string name in Files)
+            foreach (string name in files)
             {
                 string file = Path.Combine(data, name + ".bvh");
                 if (!File.Exists(file)) Assert.Ignore($"{file} not found; skipping.");
@@ -133,7 +140,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             double labelledMean = totals.Labelled / totals.Samples, knownMean = totals.Known / totals.Samples;
             double error = totals.LockedError / totals.OffError;
             string contactsFrom = model.Contract.HasFootContacts ? "predicted" : "labelled (the model has no contact output)";
-            TestContext.Out.WriteLine($"keys every {modelFrames} model frames, nine files, {totals.Samples} contact samples, model contacts {contactsFrom}:");
+            TestContext.Out.WriteLine($"keys every {modelFrames} model frames, {title}, {totals.Samples} contact samples, model contacts {contactsFrom}:");
             TestContext.Out.WriteLine($"  skating (leg lengths/s, sample-weighted): truth {truthMean:F3}, off {offMean:F3}, locked {lockedMean:F3}, labelled {labelledMean:F3}, truth's contacts {knownMean:F3}");
             TestContext.Out.WriteLine($"  locked ÷ off {lockedMean / offMean:F2} (goal ≤ {(modelFrames == 15 ? 0.30 : 0.40):F2}); locked ÷ truth {lockedMean / truthMean:F1} (goal ≤ {(modelFrames == 15 ? 3.0 : 6.0):F1})");
             TestContext.Out.WriteLine($"  labelled ÷ off {labelledMean / offMean:F2}, ÷ truth {labelledMean / truthMean:F1}; truth's contacts ÷ off {knownMean / offMean:F2}, ÷ truth {knownMean / truthMean:F1}");
