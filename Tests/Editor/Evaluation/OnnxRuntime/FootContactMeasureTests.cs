@@ -39,7 +39,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
 
         [TestCase(15)]
         [TestCase(30)]
-        public void NineFilesLockedWithTheContactSource(int modelFrames)
+        public void NineFilesLockedWithTheContactSource(int modelFrames) => Measure(Files, modelFrames, "nine files");
+
+        /// <summary>
+        /// The measure over <paramref name="files"/> (paths under the data folder without ".bvh"; "cmu/" files from frame 1
+        /// with frame 0 as the reference, "cmu-more/" files from frame 10, others from frame 0), keys every
+        /// <paramref name="modelFrames"/> model frames; prints the table and asserts only that locking helps.
+        /// </summary>
+        internal static void Measure(string[] files, int modelFrames, string title)
         {
             string lafan = TestEnvironment.RequireLafan1();
             string data = Path.GetDirectoryName(lafan)!;
@@ -48,7 +55,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             using Inbetweener model = OnnxRuntimeInbetweener.Load(defaultModel);
             FilledMotionContactClassifier? classifier = Classifier();
             var totals = new Totals();
-            foreach (string name in Files)
+            foreach (string name in files)
             {
                 string file = Path.Combine(data, name + ".bvh");
                 if (!File.Exists(file)) Assert.Ignore($"{file} not found; skipping.");
@@ -126,19 +133,24 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
                     FootSkating.Measure(truth, labelledClip, keys, feet), FootSkating.Measure(truth, knownClip, keys, feet),
                     BakeAccuracy.Measure(truth, offClip, keys).MeanPositionError / feet.LegLength, BakeAccuracy.Measure(truth, lockedClip, keys).MeanPositionError / feet.LegLength, frames);
                 HeightHold(sourced, sourcedClip, feet, relative, totals);
-                TestContext.Out.WriteLine($"  {name}: truth {truthSkating.MeanSpeed:F3}, off {totals.LastOff:F3}, locked {totals.LastLocked:F3}, labelled {totals.LastLabelled:F3}, truth's contacts {totals.LastKnown:F3}, added to the labels {FootSkating.Measure(truth, truthAddedClip, keys, feet).MeanSpeed:F3}{classified}");
+                double offAcceleration = Acceleration(offClip, feet), lockedAcceleration = Acceleration(lockedClip, feet);
+                totals.OffAcceleration += offAcceleration;
+                totals.LockedAcceleration += lockedAcceleration;
+                totals.TruthAcceleration += Acceleration(Frames(truth, keys[0], offClip.FrameCount), feet);
+                TestContext.Out.WriteLine($"  {name}: truth {truthSkating.MeanSpeed:F3}, off {totals.LastOff:F3}, locked {totals.LastLocked:F3}, labelled {totals.LastLabelled:F3}, truth's contacts {totals.LastKnown:F3}, added to the labels {FootSkating.Measure(truth, truthAddedClip, keys, feet).MeanSpeed:F3}, foot acceleration locked ÷ off {lockedAcceleration / offAcceleration:F2}{classified}");
             }
 
             double truthMean = totals.Truth / totals.Samples, offMean = totals.Off / totals.Samples, lockedMean = totals.Locked / totals.Samples;
             double labelledMean = totals.Labelled / totals.Samples, knownMean = totals.Known / totals.Samples;
             double error = totals.LockedError / totals.OffError;
             string contactsFrom = model.Contract.HasFootContacts ? "predicted" : "labelled (the model has no contact output)";
-            TestContext.Out.WriteLine($"keys every {modelFrames} model frames, nine files, {totals.Samples} contact samples, model contacts {contactsFrom}:");
+            TestContext.Out.WriteLine($"keys every {modelFrames} model frames, {title}, {totals.Samples} contact samples, model contacts {contactsFrom}:");
             TestContext.Out.WriteLine($"  skating (leg lengths/s, sample-weighted): truth {truthMean:F3}, off {offMean:F3}, locked {lockedMean:F3}, labelled {labelledMean:F3}, truth's contacts {knownMean:F3}");
             TestContext.Out.WriteLine($"  locked ÷ off {lockedMean / offMean:F2} (goal ≤ {(modelFrames == 15 ? 0.30 : 0.40):F2}); locked ÷ truth {lockedMean / truthMean:F1} (goal ≤ {(modelFrames == 15 ? 3.0 : 6.0):F1})");
             TestContext.Out.WriteLine($"  labelled ÷ off {labelledMean / offMean:F2}, ÷ truth {labelledMean / truthMean:F1}; truth's contacts ÷ off {knownMean / offMean:F2}, ÷ truth {knownMean / truthMean:F1}");
             TestContext.Out.WriteLine($"  position error locked ÷ off {error:F3} (non-key-frame-weighted; goal ≤ 1.02)");
             TestContext.Out.WriteLine($"  planted samples held within 1 % of a leg of their height: {100.0 * totals.HeldWithin / totals.Held:F1} % of {totals.Held} (largest {totals.WorstHeight:F4} leg lengths)");
+            TestContext.Out.WriteLine($"  foot joints' acceleration over all frames locked ÷ off {totals.LockedAcceleration / totals.OffAcceleration:F3}, the truth's ÷ off {totals.TruthAcceleration / totals.OffAcceleration:F3} (smoothness: a hold that pops shows here, not in skating)");
             TestContext.Out.WriteLine($"  the truth's contacts added to the locker's labels ÷ off {totals.TruthAdded / totals.Samples / offMean:F2}, ÷ truth {totals.TruthAdded / totals.Samples / truthMean:F1}");
             if (classifier != null)
             {
@@ -242,6 +254,34 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             }
         }
 
+        /// <summary>
+        /// The summed magnitude of every foot joint's acceleration (second difference ÷ dt², leg lengths per second²) over
+        /// the clip's inner frames: locking that eases a foot in and out leaves it near the unlocked motion's, one that snaps
+        /// a foot onto its spot or lets it go at once raises it however little the foot skates on its planted frames.
+        /// </summary>
+        private static double Acceleration(MotionClip clip, FootRig feet)
+        {
+            int n = feet.FootJoints.Count, frames = clip.FrameCount;
+            double[] p = FootSkating.FootPositions(clip, 0, frames, feet.FootJoints);
+            double dt2 = clip.FrameTime * clip.FrameTime, sum = 0;
+            for (int f = 1; f + 1 < frames; f++)
+            {
+                for (int j = 0; j < n; j++)
+                {
+                    double a2 = 0;
+                    for (int k = 0; k < 3; k++)
+                    {
+                        double a = p[((f + 1) * n + j) * 3 + k] - 2 * p[(f * n + j) * 3 + k] + p[((f - 1) * n + j) * 3 + k];
+                        a2 += a * a;
+                    }
+
+                    sum += Math.Sqrt(a2) / dt2 / feet.LegLength;
+                }
+            }
+
+            return sum;
+        }
+
         /// <summary>The truth's flags per foot joint (frames × the rig's foot joints) as the locker's channels (frames × 4; a missing toe never planted).</summary>
         private static bool[] Channels(bool[] planted, FootRig feet, int frames)
         {
@@ -275,6 +315,13 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             return most;
         }
 
+        /// <summary>Frames <paramref name="first"/>.. of <paramref name="clip"/>, <paramref name="count"/> of them.</summary>
+        private static MotionClip Frames(MotionClip clip, int first, int count)
+        {
+            int p = 3 * clip.Skeleton.JointCount, r = 4 * clip.Skeleton.JointCount;
+            return new MotionClip(clip.Skeleton, count, clip.FrameTime, clip.LocalPositions.AsSpan(first * p, count * p).ToArray(), clip.LocalRotations.AsSpan(first * r, count * r).ToArray());
+        }
+
         private static MotionClip Copy(MotionClip clip) =>
             new MotionClip(clip.Skeleton, clip.FrameCount, clip.FrameTime, (double[])clip.LocalPositions.Clone(), (double[])clip.LocalRotations.Clone());
 
@@ -283,6 +330,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             public double Truth, Off, Locked, Labelled, Known, OffError, LockedError, WorstHeight;
             public double LastOff, LastLocked, LastLabelled, LastKnown;
             public double TruthAdded, Classified, ClassifierAdded;
+            public double OffAcceleration, LockedAcceleration, TruthAcceleration;
             public int ClassifierHits, ClassifierSaid, ClassifierActual;
             public int Samples, Held, HeldWithin;
 
