@@ -93,29 +93,8 @@ namespace DeltaInterpolator.Benchmarks
                 _live[c] = new LiveFootLocker(rig);
             }
 
-            BeginTransitions();
-            for (int f = 1; f < Frames - 1; f++)
-            {
-                MotionClip clip = _clips[0];
-                Array.Copy(clip.LocalRotations, f * j * 4, _rotations[0], 0, 4 * j);
-                _live[0].LockPose(f / 30.0, clip.LocalPositions.AsSpan(f * j * 3, 3), _rotations[0]);
-                for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
-                {
-                    if (_live[0].LockWeight(channel) <= 0) throw new InvalidOperationException($"playback frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
-                }
-            }
-
-            BeginTransitions(planned: true);
-            for (int f = 1; f < Frames - 1; f++)
-            {
-                MotionClip clip = _clips[0];
-                Array.Copy(clip.LocalRotations, f * j * 4, _rotations[0], 0, 4 * j);
-                _live[0].LockPose(f / 30.0, clip.LocalPositions.AsSpan(f * j * 3, 3), _rotations[0]);
-                for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
-                {
-                    if (_live[0].LockWeight(channel) <= 0) throw new InvalidOperationException($"planned playback frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
-                }
-            }
+            RequireEveryFootHeld(j, planned: false);
+            RequireEveryFootHeld(j, planned: true);
 
             BeginTransitions();
 
@@ -124,6 +103,23 @@ namespace DeltaInterpolator.Benchmarks
                 for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
                 {
                     if (_lockers[0].LockWeight(f, channel) <= 0) throw new InvalidOperationException($"frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
+                }
+            }
+        }
+
+        // The first character's transition, played through once pose by pose or planned: every foot joint must be held on
+        // every frame, or the benchmark would measure less than it says.
+        private void RequireEveryFootHeld(int joints, bool planned)
+        {
+            BeginTransitions(planned);
+            MotionClip clip = _clips[0];
+            for (int f = 1; f < Frames - 1; f++)
+            {
+                Array.Copy(clip.LocalRotations, f * joints * 4, _rotations[0], 0, 4 * joints);
+                _live[0].LockPose(f / 30.0, clip.LocalPositions.AsSpan(f * joints * 3, 3), _rotations[0]);
+                for (int channel = 0; channel < FootLocker.ChannelCount; channel++)
+                {
+                    if (_live[0].LockWeight(channel) <= 0) throw new InvalidOperationException($"{(planned ? "planned " : "")}playback frame {f}: foot joint {channel} is not held; the benchmark would measure less than it says");
                 }
             }
         }
