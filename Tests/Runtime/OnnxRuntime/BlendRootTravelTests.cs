@@ -15,45 +15,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// is placed where Timeline's mix of both clips' root motion leaves the character when the blend ends.
     /// </summary>
     [TestFixture]
-    public sealed class BlendRootTravelTests
+    public sealed class BlendRootTravelTests : DemoRootTravelFixture
     {
         private const double BlendStart = 2.6, BlendEnd = 3.0, JumpsClipIn = 0.2;
         private const double PoseTolerance = 1e-5;
-        private Inbetweener _network = null!;
-        private CharacterRig _rig = null!;
-        private IClipPoses _walk = null!;
-        private IClipPoses _jumps = null!;
-        private BlendModel _model = null!;
-
-        [OneTimeSetUp]
-        public void Load()
-        {
-            DemoBlendClips clips = DemoBlendClips.Load();
-            _rig = clips.Rig;
-            _walk = new MotionClipPoses("walk", _rig, clips.Walk);
-            _jumps = new MotionClipPoses("jumps", _rig, clips.Jumps);
-            _network = TwoRigBakeTests.ShippedModel();
-            _model = new BlendModel(_network.Contract, _network, maxBoneDeviationDegrees: 30);
-        }
-
-        [OneTimeTearDown]
-        public void Unload() => _network?.Dispose();
-
         private static TrackSpan Blend(double start = BlendStart) =>
             TrackLayout.Create(new[] { new TrackClipTiming(0, 3.0, 0, 3.0), new TrackClipTiming(start, 3.0, JumpsClipIn, 401 / 120.0) }).Spans[0];
-
-        private RootPlacement Placement(IClipPoses clip, double time)
-        {
-            var root = new double[3];
-            var rotations = new double[4 * _rig.Skeleton.JointCount];
-            clip.Sample(time, root, rotations);
-            return RootPlacement.OfPose(_rig, root, rotations.AsSpan(0, 4));
-        }
-
-        private static double Distance(RootPlacement a, RootPlacement b) =>
-            Math.Max(Math.Max(Math.Abs(a.X - b.X), Math.Abs(a.Z - b.Z)), Math.Abs(Math.IEEERemainder(a.Yaw - b.Yaw, 2 * Math.PI)));
-
-        private static RootPlacement Step(SpanRootTravel travel, int k) => travel.Frame(k).StepTo(travel.Frame(k + 1));
 
         /// <summary>
         /// Where Timeline's mix of the walk's and the jumps' root motion leaves the character over the blend, integrated as
@@ -68,8 +35,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             for (int i = 0; i < substeps; i++)
             {
                 double t = BlendStart + i * h, u = (i + 0.5) / substeps, w = u * u * (3 - 2 * u);
-                RootPlacement a = Placement(_walk, t).StepTo(Placement(_walk, t + h));
-                RootPlacement b = Placement(_jumps, JumpsClipIn + (t - BlendStart)).StepTo(Placement(_jumps, JumpsClipIn + (t + h - BlendStart)));
+                RootPlacement a = Placement(Walk, t).StepTo(Placement(Walk, t + h));
+                RootPlacement b = Placement(Jumps, JumpsClipIn + (t - BlendStart)).StepTo(Placement(Jumps, JumpsClipIn + (t + h - BlendStart)));
                 at = at.Then(new RootPlacement((1 - w) * a.X + w * b.X, (1 - w) * a.Z + w * b.Z, (1 - w) * a.Yaw + w * b.Yaw));
             }
 
@@ -100,24 +67,24 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void TheBlendStartsOnTheWalkInItsPlacementAndEndsOnTheJumpsPlacedWhereTimelinesMixLeavesTheCharacter()
         {
             TrackSpan blend = Blend();
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
             Assert.That((frames.Mode, travel.FrameCount, travel.Mode), Is.EqualTo((BlendMode.Model, 13, RootTravelMode.SceneOffset)));
-            int bones = _rig.Skeleton.JointCount;
+            int bones = Rig.Skeleton.JointCount;
             double[] root = new double[3], rotations = new double[4 * bones], clipRoot = new double[3], clipRotations = new double[4 * bones];
 
             // The first frame: the walk's pose where the blend starts, as sampled (its own placement), and the travel starts there.
-            RootPlacement leaving = Placement(_walk, BlendStart);
+            RootPlacement leaving = Placement(Walk, BlendStart);
             frames.Sample(0, root, rotations);
-            _walk.Sample(BlendStart, clipRoot, clipRotations);
+            Walk.Sample(BlendStart, clipRoot, clipRotations);
             double first = PoseDifference(root, rotations, clipRoot, clipRotations);
             double firstPlacement = Distance(travel.Frame(0), leaving);
 
             // The last frame: the jumps' pose where the blend ends, placed where Timeline's mix of both clips' root motion
             // leaves the character (integrated finely here, by the plan one model frame at a time).
             RootPlacement mixed = MixedArrival(leaving), arrived = travel.Frame(12);
-            RootPlacement jumpsOwn = Placement(_jumps, JumpsClipIn + 0.4);
+            RootPlacement jumpsOwn = Placement(Jumps, JumpsClipIn + 0.4);
             frames.Sample(1, root, rotations);
-            new PlacedClipPoses(_jumps, _rig, arrived.Then(jumpsOwn.Inverse())).Sample(JumpsClipIn + 0.4, clipRoot, clipRotations);
+            new PlacedClipPoses(Jumps, Rig, arrived.Then(jumpsOwn.Inverse())).Sample(JumpsClipIn + 0.4, clipRoot, clipRotations);
             double last = PoseDifference(root, rotations, clipRoot, clipRotations);
             double travelled = Math.Sqrt((mixed.X - leaving.X) * (mixed.X - leaving.X) + (mixed.Z - leaving.Z) * (mixed.Z - leaving.Z));
             TestContext.WriteLine($"blend, scene offsets: first frame {first:E2} from the walk's pose, travel starts {firstPlacement:E2} from its placement; " +
@@ -134,8 +101,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void NoJumpInTheShownPoseOrTheRootAtEitherEnd()
         {
             TrackSpan blend = Blend();
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
-            int bones = _rig.Skeleton.JointCount;
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            int bones = Rig.Skeleton.JointCount;
             double[] root = new double[3], rotations = new double[4 * bones], clipRoot = new double[3], clipRotations = new double[4 * bones];
 
             // What a root-motion clip shows is its pose with its own placement taken out (the character stands on it): the
@@ -143,17 +110,17 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             double ShownDifference(double fraction, IClipPoses clip, double time)
             {
                 frames.Sample(fraction, root, rotations);
-                travel.InPlace(_rig, fraction, root, rotations.AsSpan(0, 4));
+                travel.InPlace(Rig, fraction, root, rotations.AsSpan(0, 4));
                 clip.Sample(time, clipRoot, clipRotations);
-                Placement(clip, time).Inverse().Move(_rig, clipRoot, clipRotations.AsSpan(0, 4));
+                Placement(clip, time).Inverse().Move(Rig, clipRoot, clipRotations.AsSpan(0, 4));
                 return PoseDifference(root, rotations, clipRoot, clipRotations);
             }
 
-            double start = ShownDifference(0, _walk, BlendStart), end = ShownDifference(1, _jumps, JumpsClipIn + 0.4);
+            double start = ShownDifference(0, Walk, BlendStart), end = ShownDifference(1, Jumps, JumpsClipIn + 0.4);
 
             // The root's step: the walk's last before the blend, the jumps' first after it; the model's first and last steps.
-            RootPlacement walkStep = Placement(_walk, BlendStart - 1 / 30.0).StepTo(Placement(_walk, BlendStart));
-            RootPlacement jumpsStep = Placement(_jumps, JumpsClipIn + 0.4).StepTo(Placement(_jumps, JumpsClipIn + 0.4 + 1 / 30.0));
+            RootPlacement walkStep = Placement(Walk, BlendStart - 1 / 30.0).StepTo(Placement(Walk, BlendStart));
+            RootPlacement jumpsStep = Placement(Jumps, JumpsClipIn + 0.4).StepTo(Placement(Jumps, JumpsClipIn + 0.4 + 1 / 30.0));
             RootPlacement firstStep = Step(travel, 0), lastStep = Step(travel, 11);
             double walkPace = Math.Sqrt(walkStep.X * walkStep.X + walkStep.Z * walkStep.Z);
             double inside = 0;
@@ -173,21 +140,21 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void WithoutRootMotionTheBlendIsTheSameFramesBitForBit()
         {
             TrackSpan blend = Blend();
-            BlendFrames before = new BlendCache().Get(_model, _rig, blend, _walk, _jumps);
+            BlendFrames before = new BlendCache().Get(Model, Rig, blend, Walk, Jumps);
             var cache = new BlendCache();
-            SpanRootTravel travel = SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(cache, Model, Rig, blend, Walk, Jumps, RootTravelMode.None, default, out BlendFrames frames);
             Assert.That(travel.Mode, Is.EqualTo(RootTravelMode.None));
             Assert.That(frames.Motion!.LocalRotations.SequenceEqual(before.Motion!.LocalRotations), "rotations bit for bit");
             Assert.That(frames.Motion.LocalPositions.SequenceEqual(before.Motion.LocalPositions), "positions bit for bit");
-            Assert.That(cache.Get(_model, _rig, blend, _walk, _jumps), Is.SameAs(frames), "the cache's own blend, not a second bake");
+            Assert.That(cache.Get(Model, Rig, blend, Walk, Jumps), Is.SameAs(frames), "the cache's own blend, not a second bake");
             Assert.That(cache.Computed, Is.EqualTo(1));
 
             // And the travel leaves the pose as it is and moves nothing.
-            int bones = _rig.Skeleton.JointCount;
+            int bones = Rig.Skeleton.JointCount;
             double[] root = new double[3], rotations = new double[4 * bones];
             frames.Sample(0.4, root, rotations);
             double[] rootBefore = (double[])root.Clone(), rotationsBefore = (double[])rotations.Clone();
-            travel.InPlace(_rig, 0.4, root, rotations.AsSpan(0, 4));
+            travel.InPlace(Rig, 0.4, root, rotations.AsSpan(0, 4));
             Assert.That(root, Is.EqualTo(rootBefore));
             Assert.That(rotations, Is.EqualTo(rotationsBefore));
             travel.Velocity(0.4, blend.Duration, out double x, out double z, out double yawRate);
@@ -199,10 +166,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             TrackSpan blend = Blend();
             var arrival = new RootPlacement(0.5, 6.0, -15 * Math.PI / 180);
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out _);
-            RootPlacement leaving = Placement(_walk, BlendStart);
-            RootPlacement walkStep = Placement(_walk, BlendStart - 1 / 30.0).StepTo(leaving);
-            RootPlacement jumpsStep = Placement(_jumps, JumpsClipIn + 0.4).StepTo(Placement(_jumps, JumpsClipIn + 0.4 + 1 / 30.0));
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.TransformOffset, arrival, out _);
+            RootPlacement leaving = Placement(Walk, BlendStart);
+            RootPlacement walkStep = Placement(Walk, BlendStart - 1 / 30.0).StepTo(leaving);
+            RootPlacement jumpsStep = Placement(Jumps, JumpsClipIn + 0.4).StepTo(Placement(Jumps, JumpsClipIn + 0.4 + 1 / 30.0));
             Assert.That(Distance(travel.Frame(0), leaving), Is.LessThan(1e-5));
             Assert.That(Distance(travel.Frame(12), leaving.Then(arrival)), Is.LessThan(1e-12));
             Assert.That(Distance(Step(travel, 0), walkStep), Is.LessThan(1e-9));
@@ -213,19 +180,19 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void TheClipsMixInCurveDecidesWhereTheBlendEndsAndABlendTimelineCrossfadesHasNoTravel()
         {
             TrackSpan blend = Blend();
-            SpanRootTravel eased = SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out _);
+            SpanRootTravel eased = SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out _);
             // A Manual mix-in that hands over to the jumps at once: the character ends where the jumps alone take it.
-            SpanRootTravel sudden = SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out _, null, u => 1.0);
-            RootPlacement jumpsOnly = Placement(_walk, BlendStart).Then(Placement(_jumps, JumpsClipIn).StepTo(Placement(_jumps, JumpsClipIn + 0.4)));
+            SpanRootTravel sudden = SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out _, null, u => 1.0);
+            RootPlacement jumpsOnly = Placement(Walk, BlendStart).Then(Placement(Jumps, JumpsClipIn).StepTo(Placement(Jumps, JumpsClipIn + 0.4)));
             TestContext.WriteLine($"ends: default ease {eased.Frame(12)}, all jumps {sudden.Frame(12)} (the jumps' own travel from the walk's placement: {jumpsOnly})");
             Assert.That(Distance(sudden.Frame(12), jumpsOnly), Is.LessThan(1e-4));
             Assert.That(Distance(sudden.Frame(12), eased.Frame(12)), Is.GreaterThan(0.1));
-            var w = Assert.Throws<ArgumentOutOfRangeException>(() => SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out _, null, u => double.NaN));
+            var w = Assert.Throws<ArgumentOutOfRangeException>(() => SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out _, null, u => double.NaN));
             Assert.That(w!.ParamName, Is.EqualTo("blendIn"));
 
             // 0.1 s: 2 missing frames, under the trained range: Timeline crossfades, with its own root motion.
             TrackSpan shortBlend = Blend(2.9);
-            SpanRootTravel none = SpanRootPlan.Bake(new BlendCache(), _model, _rig, shortBlend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames crossfade);
+            SpanRootTravel none = SpanRootPlan.Bake(new BlendCache(), Model, Rig, shortBlend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames crossfade);
             Assert.That((crossfade.Mode, none.Mode), Is.EqualTo((BlendMode.Crossfade, RootTravelMode.None)));
         }
 
@@ -234,12 +201,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             TrackSpan blend = Blend();
             var cache = new BlendCache();
-            SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames first);
-            SpanRootTravel again = SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames second);
+            SpanRootPlan.Bake(cache, Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames first);
+            SpanRootTravel again = SpanRootPlan.Bake(cache, Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames second);
             Assert.That(second, Is.SameAs(first), "a rebuilt graph with nothing changed finds the blend");
             Assert.That(cache.Computed, Is.EqualTo(1));
             // A mix-in that moves the target key is what the bake reads, so it is a new blend.
-            SpanRootPlan.Bake(cache, _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames linear, null, u => u);
+            SpanRootPlan.Bake(cache, Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames linear, null, u => u);
             Assert.That(linear, Is.Not.SameAs(first));
             Assert.That(cache.Computed, Is.EqualTo(2));
             Assert.That(again.FrameCount, Is.EqualTo(13));
@@ -251,14 +218,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             TrackSpan blend = Blend();
             TrackLayout layout = TrackLayout.Create(new[] { new TrackClipTiming(0, 3.0, 0, 3.0), new TrackClipTiming(BlendStart, 3.0, JumpsClipIn, 401 / 120.0) });
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, blend, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
-            double[] root = new double[3], rotations = new double[4 * _rig.Skeleton.JointCount];
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, blend, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            double[] root = new double[3], rotations = new double[4 * Rig.Skeleton.JointCount];
             double sum = 0;
             void Frame(int i)
             {
                 TrackMoment moment = layout.Locate(BlendStart + (i % 40) / 100.0);
                 frames.Sample(moment.Fraction, root, rotations);
-                travel.InPlace(_rig, moment.Fraction, root, rotations.AsSpan(0, 4));
+                travel.InPlace(Rig, moment.Fraction, root, rotations.AsSpan(0, 4));
                 travel.Velocity(moment.Fraction, blend.Duration, out double x, out double z, out double yawRate);
                 sum += x + z + yawRate;
             }

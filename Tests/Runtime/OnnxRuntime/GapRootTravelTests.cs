@@ -13,54 +13,21 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
     /// gap from the walk's end (3 s) to the jumps (clip-in 0.2 s), 17 missing frames at 30 fps.
     /// </summary>
     [TestFixture]
-    public sealed class GapRootTravelTests
+    public sealed class GapRootTravelTests : DemoRootTravelFixture
     {
-        private Inbetweener _network = null!;
-        private CharacterRig _rig = null!;
-        private IClipPoses _walk = null!;
-        private IClipPoses _jumps = null!;
-        private BlendModel _model = null!;
-
-        [OneTimeSetUp]
-        public void Load()
-        {
-            DemoBlendClips clips = DemoBlendClips.Load();
-            _rig = clips.Rig;
-            _walk = new MotionClipPoses("walk", _rig, clips.Walk);
-            _jumps = new MotionClipPoses("jumps", _rig, clips.Jumps);
-            _network = TwoRigBakeTests.ShippedModel();
-            _model = new BlendModel(_network.Contract, _network, maxBoneDeviationDegrees: 30);
-        }
-
-        [OneTimeTearDown]
-        public void Unload() => _network?.Dispose();
-
         private static TrackSpan Gap() => TrackLayout.Create(new[] { new TrackClipTiming(0, 3.0, 0, 3.0), new TrackClipTiming(3.6, 3.0, 0.2, 401 / 120.0) }).Spans[0];
-
-        private RootPlacement Placement(IClipPoses clip, double time)
-        {
-            var root = new double[3];
-            var rotations = new double[4 * _rig.Skeleton.JointCount];
-            clip.Sample(time, root, rotations);
-            return RootPlacement.OfPose(_rig, root, rotations.AsSpan(0, 4));
-        }
-
-        private static double Distance(RootPlacement a, RootPlacement b) =>
-            Math.Max(Math.Max(Math.Abs(a.X - b.X), Math.Abs(a.Z - b.Z)), Math.Abs(Math.IEEERemainder(a.Yaw - b.Yaw, 2 * Math.PI)));
-
-        private static RootPlacement Step(SpanRootTravel travel, int k) => travel.Frame(k).StepTo(travel.Frame(k + 1));
 
         [Test]
         public void WithSceneOffsetsTheGapTravelsAlongTheModelsOwnTrajectory()
         {
             TrackSpan gap = Gap();
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, gap, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
             Assert.That((frames.Mode, travel.FrameCount, travel.Mode), Is.EqualTo((BlendMode.Model, 19, RootTravelMode.SceneOffset)));
-            RootPlacement[] trajectory = SpanRootTravel.Trajectory(_rig, frames);
+            RootPlacement[] trajectory = SpanRootTravel.Trajectory(Rig, frames);
             for (int k = 0; k < trajectory.Length; k++) Assert.That(Distance(travel.Frame(k), trajectory[k]), Is.EqualTo(0), $"frame {k} is the model's own");
 
             // It starts where the walk's root motion leaves the character and ends where the walk's last step, kept up, brings it.
-            RootPlacement leaving = Placement(_walk, 3.0), walkStep = Placement(_walk, 3.0 - 1 / 30.0).StepTo(leaving);
+            RootPlacement leaving = Placement(Walk, 3.0), walkStep = Placement(Walk, 3.0 - 1 / 30.0).StepTo(leaving);
             RootPlacement kept = leaving;
             for (int k = 0; k < 18; k++) kept = kept.Then(walkStep);
             double first = Distance(travel.Frame(0), leaving), last = Distance(travel.Frame(18), kept);
@@ -80,10 +47,10 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             TrackSpan gap = Gap();
             // The jumps placed 1 unit to the side, 10 ahead (the walk covers 10.4 in 0.6 s) and turned 25° from where the walk leaves the character.
             var arrival = new RootPlacement(1.0, 10.0, 25 * Math.PI / 180);
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
-            RootPlacement leaving = Placement(_walk, 3.0);
-            RootPlacement walkStep = Placement(_walk, 3.0 - 1 / 30.0).StepTo(leaving);
-            RootPlacement jumpsStep = Placement(_jumps, 0.2).StepTo(Placement(_jumps, 0.2 + 1 / 30.0));
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, gap, Walk, Jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
+            RootPlacement leaving = Placement(Walk, 3.0);
+            RootPlacement walkStep = Placement(Walk, 3.0 - 1 / 30.0).StepTo(leaving);
+            RootPlacement jumpsStep = Placement(Jumps, 0.2).StepTo(Placement(Jumps, 0.2 + 1 / 30.0));
             Assert.That(Distance(travel.Frame(0), leaving), Is.LessThan(1e-5), "the first frame: where the walk's root motion leaves the character");
             Assert.That(Distance(travel.Frame(18), leaving.Then(arrival)), Is.LessThan(1e-12), "the last frame: the jumps' placement");
             Assert.That(Distance(Step(travel, 0), walkStep), Is.LessThan(1e-9), "the first step is the walk's last");
@@ -93,7 +60,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(inside, Is.LessThan(0.25 * pace), "inside the gap the step changes smoothly: by under a quarter of the walk's step from one frame to the next (measured 0.08 of 0.58)");
 
             // The model went to the placed target itself: its trajectory ends there within the bake's precision, so the bend is small.
-            RootPlacement[] trajectory = SpanRootTravel.Trajectory(_rig, frames);
+            RootPlacement[] trajectory = SpanRootTravel.Trajectory(Rig, frames);
             double bend = 0;
             for (int k = 0; k < trajectory.Length; k++) bend = Math.Max(bend, Distance(travel.Frame(k), trajectory[k]));
             TestContext.WriteLine($"transform offsets: largest bend from the model's trajectory {bend:F4}");
@@ -104,8 +71,8 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             // The gap baked without root motion: the model's hips go to the jumps' own start, far from where the walk stands.
             TrackSpan gap = Gap();
-            SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
-            RootPlacement[] trajectory = SpanRootTravel.Trajectory(_rig, frames);
+            SpanRootPlan.Bake(new BlendCache(), Model, Rig, gap, Walk, Jumps, RootTravelMode.None, default, out BlendFrames frames);
+            RootPlacement[] trajectory = SpanRootTravel.Trajectory(Rig, frames);
             var target = trajectory[0].Then(new RootPlacement(-0.3, 2.2, -40 * Math.PI / 180));
             var lastStep = new RootPlacement(0.001, 0.045, 0.002);
             var firstStep = new RootPlacement(-0.002, 0.03, -0.01);
@@ -129,16 +96,16 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             TrackSpan gap = Gap();
             var cache = new BlendCache();
-            BlendFrames plain = cache.Get(_model, _rig, gap, _walk, _jumps);
-            SpanRootTravel travel = SpanRootPlan.Bake(cache, _model, _rig, gap, _walk, _jumps, RootTravelMode.None, default, out BlendFrames frames);
+            BlendFrames plain = cache.Get(Model, Rig, gap, Walk, Jumps);
+            SpanRootTravel travel = SpanRootPlan.Bake(cache, Model, Rig, gap, Walk, Jumps, RootTravelMode.None, default, out BlendFrames frames);
             Assert.That(frames, Is.SameAs(plain), "the same bake as without root travel");
             Assert.That(cache.Computed, Is.EqualTo(1));
             Assert.That(travel.Mode, Is.EqualTo(RootTravelMode.None));
-            int bones = _rig.Skeleton.JointCount;
+            int bones = Rig.Skeleton.JointCount;
             double[] root = new double[3], rotations = new double[4 * bones];
             frames.Sample(0.37, root, rotations);
             double[] rootBefore = (double[])root.Clone(), rotationsBefore = (double[])rotations.Clone();
-            travel.InPlace(_rig, 0.37, root, rotations.AsSpan(0, 4));
+            travel.InPlace(Rig, 0.37, root, rotations.AsSpan(0, 4));
             Assert.That(root, Is.EqualTo(rootBefore));
             Assert.That(rotations, Is.EqualTo(rotationsBefore));
             travel.Velocity(0.37, gap.Duration, out double x, out double z, out double yawRate);
@@ -150,16 +117,16 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         {
             TrackSpan gap = Gap();
             var arrival = new RootPlacement(1.0, 10.0, 25 * Math.PI / 180);
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
-            int bones = _rig.Skeleton.JointCount;
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, gap, Walk, Jumps, RootTravelMode.TransformOffset, arrival, out BlendFrames frames);
+            int bones = Rig.Skeleton.JointCount;
             double[] root = new double[3], rotations = new double[4 * bones], moved = new double[3], movedRotations = new double[4 * bones];
             foreach (double fraction in new[] { 0.0, 0.13, 0.5, 0.77, 1.0 })
             {
                 frames.Sample(fraction, root, rotations);
                 root.CopyTo(moved, 0);
                 rotations.CopyTo(movedRotations, 0);
-                travel.InPlace(_rig, fraction, moved, movedRotations.AsSpan(0, 4));
-                travel.At(fraction).Move(_rig, moved, movedRotations.AsSpan(0, 4));
+                travel.InPlace(Rig, fraction, moved, movedRotations.AsSpan(0, 4));
+                travel.At(fraction).Move(Rig, moved, movedRotations.AsSpan(0, 4));
                 double worst = 0;
                 for (int i = 0; i < 3; i++) worst = Math.Max(worst, Math.Abs(moved[i] - root[i]));
                 for (int i = 0; i < 4; i++) worst = Math.Max(worst, Math.Abs(Math.Abs(movedRotations[i]) - Math.Abs(rotations[i])));
@@ -183,14 +150,14 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         public void ReadingTheTravelAtThePlayheadAllocatesNothing()
         {
             TrackSpan gap = Gap();
-            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), _model, _rig, gap, _walk, _jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
-            double[] root = new double[3], rotations = new double[4 * _rig.Skeleton.JointCount];
+            SpanRootTravel travel = SpanRootPlan.Bake(new BlendCache(), Model, Rig, gap, Walk, Jumps, RootTravelMode.SceneOffset, default, out BlendFrames frames);
+            double[] root = new double[3], rotations = new double[4 * Rig.Skeleton.JointCount];
             double sum = 0;
             void Frame(int i)
             {
                 double fraction = (i % 60) / 59.0;
                 frames.Sample(fraction, root, rotations);
-                travel.InPlace(_rig, fraction, root, rotations.AsSpan(0, 4));
+                travel.InPlace(Rig, fraction, root, rotations.AsSpan(0, 4));
                 travel.Velocity(fraction, gap.Duration, out double x, out double z, out double yawRate);
                 sum += x + z + yawRate + travel.At(fraction).Yaw;
             }
@@ -208,12 +175,12 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         [Test]
         public void RefusesWhatIsNoSpanOrPlacement()
         {
-            var e = Assert.Throws<ArgumentException>(() => SpanRootPlan.Bake(new BlendCache(), _model, _rig, default, _walk, _jumps, RootTravelMode.SceneOffset, default, out _));
+            var e = Assert.Throws<ArgumentException>(() => SpanRootPlan.Bake(new BlendCache(), Model, Rig, default, Walk, Jumps, RootTravelMode.SceneOffset, default, out _));
             Assert.That(e!.ParamName, Is.EqualTo("span"));
             Assert.That(e.Message, Does.Contain("; expected a blend or gap"));
-            var m = Assert.Throws<ArgumentOutOfRangeException>(() => SpanRootPlan.Bake(new BlendCache(), _model, _rig, Gap(), _walk, _jumps, (RootTravelMode)7, default, out _));
+            var m = Assert.Throws<ArgumentOutOfRangeException>(() => SpanRootPlan.Bake(new BlendCache(), Model, Rig, Gap(), Walk, Jumps, (RootTravelMode)7, default, out _));
             Assert.That(m!.ParamName, Is.EqualTo("mode"));
-            var p = Assert.Throws<ArgumentOutOfRangeException>(() => _ = new PlacedClipPoses(_jumps, _rig, new RootPlacement(double.NaN, 0, 0)));
+            var p = Assert.Throws<ArgumentOutOfRangeException>(() => _ = new PlacedClipPoses(Jumps, Rig, new RootPlacement(double.NaN, 0, 0)));
             Assert.That(p!.ParamName, Is.EqualTo("placement"));
             var t = Assert.Throws<ArgumentException>(() => SpanRootTravel.Follow(new RootPlacement[1]));
             Assert.That(t!.ParamName, Is.EqualTo("trajectory"));
