@@ -1,25 +1,14 @@
 namespace DeltaInterpolator.Evaluation.Baking
 {
-    /// <summary>Frame-weighted means of some rows of a <see cref="ScoreSheet"/>, per method, and their ratios to the baseline (the last method).</summary>
-    public sealed class ScoreTotal
-    {
-        internal ScoreTotal(int files, int frames, MethodErrors errors)
-        {
-            Files = files;
-            Frames = frames;
-            Errors = errors;
-        }
-
-        /// <summary>Files added up.</summary>
-        public int Files { get; }
-
-        /// <summary>Non-key frames added up.</summary>
-        public int Frames { get; }
-
-        /// <summary>
-        /// Every method's errors: position and L2Q weighted by the rows' frames, foot skating by their planted (frame, joint)
-        /// pairs (NaN with none).
-        /// </summary>
-        public MethodErrors Errors { get; }
-    }
+    /// <summary>
+    /// Frame-weighted means of some rows of a <see cref="ScoreSheet"/>, per method, and their ratios to the baseline (the
+    /// last method). Built by <see cref="ScoreSheet.Total()"/>; a record, so two totals compare by value.
+    /// </summary>
+    /// <param name="Files">Files added up.</param>
+    /// <param name="Frames">Non-key frames added up.</param>
+    /// <param name="Errors">
+    /// Every method's errors: position and L2Q weighted by the rows' frames, foot skating by their planted (frame, joint)
+    /// pairs (NaN with none).
+    /// </param>
+    public sealed record ScoreTotal(int Files, int Frames, MethodErrors Errors);
 }

@@ -3,45 +3,35 @@ using DeltaInterpolator.Core;
 
 namespace DeltaInterpolator.Evaluation.Benchmark
 {
-    /// <summary>What <see cref="LafanBenchmarkRun.Execute"/> produced: the report, the statistics it used, and what was read and how fast.</summary>
-    public sealed class BenchmarkOutcome
+    /// <summary>
+    /// What <see cref="LafanBenchmarkRun.Execute"/> produced: the report, the statistics it used, and what was read and how
+    /// fast. Built by the run and complete when it returns (every property is init-only).
+    /// </summary>
+    /// <param name="Folder">The folder the files came from.</param>
+    /// <param name="Report">The metric totals per method and length, all finite.</param>
+    /// <param name="Statistics">The statistics used: loaded, or computed from the training files.</param>
+    public sealed record BenchmarkOutcome(LafanBenchmarkFolder Folder, BenchmarkReport Report, BenchmarkStatistics Statistics)
     {
-        internal BenchmarkOutcome(LafanBenchmarkFolder folder, BenchmarkReport report, BenchmarkStatistics statistics)
-        {
-            Folder = folder;
-            Report = report;
-            Statistics = statistics;
-        }
-
-        /// <summary>The folder the files came from.</summary>
-        public LafanBenchmarkFolder Folder { get; }
-
-        /// <summary>The metric totals per method and length, all finite.</summary>
-        public BenchmarkReport Report { get; }
-
-        /// <summary>The statistics used: loaded, or computed from the training files.</summary>
-        public BenchmarkStatistics Statistics { get; }
-
         /// <summary>Test files read.</summary>
-        public int TestFileCount { get; internal set; }
+        public int TestFileCount { get; internal init; }
 
         /// <summary>Frames in all test files.</summary>
-        public int TestFrames { get; internal set; }
+        public int TestFrames { get; internal init; }
 
         /// <summary>Bytes in all test files.</summary>
-        public long TestBytes { get; internal set; }
+        public long TestBytes { get; internal init; }
 
         /// <summary>Training files the statistics were computed from; 0 when they were loaded.</summary>
-        public int TrainingFileCount { get; internal set; }
+        public int TrainingFileCount { get; internal init; }
 
         /// <summary>Seconds spent reading the test files.</summary>
-        public double ReadSeconds { get; internal set; }
+        public double ReadSeconds { get; internal init; }
 
         /// <summary>Seconds spent reading the training files and computing statistics; 0 when they were loaded.</summary>
-        public double StatisticsSeconds { get; internal set; }
+        public double StatisticsSeconds { get; internal init; }
 
         /// <summary>Seconds spent evaluating the windows.</summary>
-        public double EvaluationSeconds { get; internal set; }
+        public double EvaluationSeconds { get; internal init; }
 
         /// <summary>
         /// Refuses statistics that are not finite before they are saved (a file that would poison every later
