@@ -145,18 +145,8 @@ namespace DeltaInterpolator.Core.Blends
             return new BlendFrames(mode, rig, frames, warning);
         }
 
-        private sealed class Entry
-        {
-            public Entry(Key key, BlendFrames frames)
-            {
-                Key = key;
-                Frames = frames;
-            }
-
-            public Key Key { get; }
-
-            public BlendFrames Frames { get; }
-        }
+        /// <summary>A cached blend and the key it was baked for.</summary>
+        private sealed record Entry(Key Key, BlendFrames Frames);
 
         /// <summary>Everything a blend's bake reads, compared exactly.</summary>
         private sealed class Key : IEquatable<Key>
