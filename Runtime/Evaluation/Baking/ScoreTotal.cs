@@ -2,7 +2,7 @@ namespace DeltaInterpolator.Evaluation.Baking
 {
     /// <summary>
     /// Frame-weighted means of some rows of a <see cref="ScoreSheet"/>, per method, and their ratios to the baseline (the
-    /// last method). Built by <see cref="ScoreSheet.Total()"/>; a record, so two totals compare by value.
+    /// last method). Built by <see cref="ScoreSheet.Total()"/>.
     /// </summary>
     /// <param name="Files">Files added up.</param>
     /// <param name="Frames">Non-key frames added up.</param>
