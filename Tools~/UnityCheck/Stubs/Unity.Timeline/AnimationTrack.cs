@@ -1,8 +1,22 @@
 namespace UnityEngine.Timeline
 {
     // source: timeline:Runtime/Animation/AnimationTrack.cs
+    public enum TrackOffset
+    {
+        ApplyTransformOffsets,
+        ApplySceneOffsets,
+        Auto,
+    }
+
+    // source: timeline:Runtime/Animation/AnimationTrack.cs
     public partial class AnimationTrack : TrackAsset
     {
         public TimelineClip CreateClip(AnimationClip clip) => throw null!;
+
+        public TrackOffset trackOffset { get => throw null!; set => throw null!; }
+
+        public Vector3 position { get => throw null!; set => throw null!; }
+
+        public Vector3 eulerAngles { get => throw null!; set => throw null!; }
     }
 }
