@@ -17,7 +17,9 @@ namespace DeltaInterpolator.Timeline
     /// the blend starts (its past frames as history) to the second's where it ends, and where time lies between two clips
     /// from the first one's last frame to the second one's first, instead of a crossfade. Each blend is baked once when the
     /// graph is built and read from a cache as the playhead moves (<see cref="NeuralBlendLayer"/>), so scrubbing in edit
-    /// mode shows what plays.
+    /// mode shows what plays. Clips that move the root are placed as on an Animation Track: by default at the track's and each
+    /// clip's offsets (Apply Transform Offsets, the track putting the character there itself: <see cref="TrackRootPath"/>), or
+    /// each from where the character stands (Apply Scene Offsets).
     /// </summary>
     [Serializable]
     [TrackClipType(typeof(AnimationPlayableAsset), false)]

@@ -12,11 +12,5 @@ namespace UnityEngine.Timeline
     public partial class AnimationTrack : TrackAsset
     {
         public TimelineClip CreateClip(AnimationClip clip) => throw null!;
-
-        public TrackOffset trackOffset { get => throw null!; set => throw null!; }
-
-        public Vector3 position { get => throw null!; set => throw null!; }
-
-        public Vector3 eulerAngles { get => throw null!; set => throw null!; }
     }
 }
