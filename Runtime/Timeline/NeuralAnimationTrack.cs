@@ -17,7 +17,9 @@ namespace DeltaInterpolator.Timeline
     /// the blend starts (its past frames as history) to the second's where it ends, and where time lies between two clips
     /// from the first one's last frame to the second one's first, instead of a crossfade. Each blend is baked once when the
     /// graph is built and read from a cache as the playhead moves (<see cref="NeuralBlendLayer"/>), so scrubbing in edit
-    /// mode shows what plays.
+    /// mode shows what plays. Clips that move the root are placed as on an Animation Track: by default at the track's and each
+    /// clip's offsets (Apply Transform Offsets, the track putting the character there itself: <see cref="TrackRootPath"/>), or
+    /// each from where the character stands (Apply Scene Offsets).
     /// </summary>
     [Serializable]
     [TrackClipType(typeof(AnimationPlayableAsset), false)]
@@ -28,11 +30,47 @@ namespace DeltaInterpolator.Timeline
         [Tooltip("The model, engine and rig, as the Motion Inbetweener component takes them.")]
         private InbetweenerSettings? settings;
 
+        [SerializeField]
+        [Tooltip("What places the character when its clips move the root, as on an Animation Track: Apply Transform Offsets (each clip's root motion from its clip offset, after the track's offset; the default), Apply Scene Offsets (each clip from where the character stands), or Auto (scene offsets when the Animator has a controller, else transform offsets).")]
+        private TrackOffset trackOffset = TrackOffset.ApplyTransformOffsets;
+
+        [SerializeField]
+        [Tooltip("The track's position offset (in the character's parent's space), with Apply Transform Offsets. Its height is not used.")]
+        private Vector3 position;
+
+        [SerializeField]
+        [Tooltip("The track's rotation offset (Euler angles, degrees), with Apply Transform Offsets. Only its turn about the up axis is used.")]
+        private Vector3 eulerAngles;
+
+        // The tracks that were told once that an offset's height, pitch or roll is not used.
+        private static readonly HashSet<int> s_flattenedSaid = new HashSet<int>();
+
         /// <summary>The model, engine and rig the blends are baked with.</summary>
         public InbetweenerSettings? Settings
         {
             get => settings;
             set => settings = value;
+        }
+
+        /// <summary>What places the character when the clips move the root (Timeline's <c>AnimationTrack.trackOffset</c>; the same default).</summary>
+        public TrackOffset TrackOffset
+        {
+            get => trackOffset;
+            set => trackOffset = value;
+        }
+
+        /// <summary>The track's position offset, with transform offsets (Timeline's <c>AnimationTrack.position</c>); x and z are used.</summary>
+        public Vector3 Position
+        {
+            get => position;
+            set => position = value;
+        }
+
+        /// <summary>The track's rotation offset in Euler angles, with transform offsets (Timeline's <c>AnimationTrack.eulerAngles</c>); the yaw is used.</summary>
+        public Vector3 EulerAngles
+        {
+            get => eulerAngles;
+            set => eulerAngles = value;
         }
 
         // The character's IAnimationWindowPreview components, let into the Editor preview after this track's mix.
@@ -72,7 +110,8 @@ namespace DeltaInterpolator.Timeline
                     var timings = new List<TrackClipTiming>();
                     var clips = new List<AnimationClip?>();
                     var mixIn = new List<AnimationCurve?>();
-                    bool rootTransforms = false;
+                    var placements = new List<ClipPlacement>();
+                    bool rootTransforms = false, flattened = false;
                     foreach (TimelineClip clip in GetClips())
                     {
                         var playable = clip.asset as AnimationPlayableAsset;
@@ -87,12 +126,23 @@ namespace DeltaInterpolator.Timeline
                         // A blend's root travel weighs the clips as Timeline does: the second clip by its mix-in curve (timeline.md).
                         mixIn.Add(clip.mixInCurve);
                         // Timeline's own test for a clip that moves the root (AnimationPlayableAsset.HasRootTransforms, less the internal hasRootMotion).
-                        rootTransforms |= animation != null && !animation.empty && (animation.hasGenericRootTransform || animation.hasMotionCurves || animation.hasRootCurves);
+                        bool movesRoot = animation != null && !animation.empty && (animation.hasGenericRootTransform || animation.hasMotionCurves || animation.hasRootCurves);
+                        rootTransforms |= movesRoot;
+                        RootPlacement offset = playable != null ? Offset(playable.position, playable.eulerAngles, ref flattened) : RootPlacement.Identity;
+                        placements.Add(new ClipPlacement(offset, playable == null || playable.removeStartOffset, movesRoot));
                     }
 
-                    // A custom track's clips play their root motion as the clip playables make it, each from where the character
-                    // stands (Timeline's scene offsets; the offset playables an Animation Track adds are internal): timeline.md.
-                    layer.Build(timings, clips, rootTransforms && animator!.applyRootMotion ? RootTravelMode.SceneOffset : RootTravelMode.None, mixIn);
+                    // Clips that move the root, played by an Animator that applies root motion: placed as an Animation Track places
+                    // them (its offset playables are internal, so the track puts the character there itself: timeline.md).
+                    RootTravelMode mode = !(rootTransforms && animator!.applyRootMotion) ? RootTravelMode.None
+                        : PlacesClips(trackOffset, animator.runtimeAnimatorController != null) ? RootTravelMode.TransformOffset : RootTravelMode.SceneOffset;
+                    RootPlacement track = Offset(position, eulerAngles, ref flattened);
+                    if (mode == RootTravelMode.TransformOffset && flattened && s_flattenedSaid.Add(GetInstanceID()))
+                    {
+                        Debug.LogWarning($"{name}: a track or clip offset has a height, pitch or roll; the track places the character on the ground by x, z and the turn about the up axis only (timeline.md, Known limitations)", this);
+                    }
+
+                    layer.Build(timings, clips, mode, mixIn, track, placements);
                 }
                 catch (Exception e) when (e is InvalidOperationException || e is JointMapException || e is ModelContractException || e is ArgumentException)
                 {
@@ -111,6 +161,27 @@ namespace DeltaInterpolator.Timeline
             driver.GetBehaviour().Bind(layer, director, previewComponents);
             ScriptPlayableOutput.Create(graph, name + " (neural blends)").SetSourcePlayable(driver);
             return mixer;
+        }
+
+        /// <summary>
+        /// Whether the clips are placed at their offsets (transform offsets) rather than played from where the character stands
+        /// (scene offsets): as Timeline 1.8.10 decides it for an Animation Track (<c>AnimationTrack.GetOffsetMode</c>,
+        /// <c>Runtime/Animation/AnimationTrack.cs:969-988</c>) — Auto, a legacy mode, is scene offsets when the bound Animator has
+        /// a controller and transform offsets when it has none.
+        /// </summary>
+        private static bool PlacesClips(TrackOffset mode, bool hasController) => mode switch
+        {
+            TrackOffset.ApplyTransformOffsets => true,
+            TrackOffset.ApplySceneOffsets => false,
+            _ => !hasController,
+        };
+
+        /// <summary>A Timeline offset (position, Euler angles in degrees) as a placement on the ground; <paramref name="flattened"/> set where it had a height, pitch or roll.</summary>
+        private static RootPlacement Offset(Vector3 position, Vector3 euler, ref bool flattened)
+        {
+            RootPlacement placement = RootPlacement.OfOffset(position.x, position.y, position.z, euler.x, euler.y, euler.z, out bool lost);
+            flattened |= lost;
+            return placement;
         }
 
         /// <summary>Timeline's clip extrapolation as Core's (the same five modes).</summary>

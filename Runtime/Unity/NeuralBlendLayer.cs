@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using DeltaInterpolator.Core.Blends;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Inference;
+using DeltaInterpolator.Core.Rotations;
 using Unity.Collections;
 using UnityEngine;
 using UnityEngine.Animations;
@@ -45,11 +46,14 @@ namespace DeltaInterpolator.Unity
         private readonly BlendModel _model;
         private readonly PoseBlendBuffers _buffers;
         private readonly double[] _sample;
-        // [0..2] the span's root velocity in the character's frame (per second), [3] its turn rate about +Y (rad/s), [4] 1 while a blend or gap travels.
-        private NativeArray<double> _rootVelocity = new NativeArray<double>(5, Allocator.Persistent);
+        // [0..2] the span's root velocity in the character's frame (per second), [3] its turn rate about +Y (rad/s), [4] 1 while a
+        // blend or gap travels, 2 where the track places the character: [5..7] where it stands, [8..10] where it must (x, z, yaw).
+        private NativeArray<double> _rootVelocity = new NativeArray<double>(11, Allocator.Persistent);
         private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
         private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
         private SpanRootTravel?[] _travel = Array.Empty<SpanRootTravel?>();
+        // With transform offsets: where the character stands at any time (null otherwise: the clips' root motion plays relatively).
+        private TrackRootPath? _path;
         private static readonly HashSet<string> s_said = new HashSet<string>();
 
         private NeuralBlendLayer(Animator animator, CharacterRig rig, Transform[] bones, BlendModel model)
@@ -100,22 +104,32 @@ namespace DeltaInterpolator.Unity
         /// once in the Console. With <paramref name="rootTravel"/> a blend or gap carries root motion (<see cref="SpanRootPlan"/>):
         /// a blend's target is placed where Timeline's mix of its clips' root motion leaves the character, the clips weighted
         /// by the second clip's mix-in curve (<paramref name="mixIn"/>, Timeline's <c>TimelineClip.mixInCurve</c>; null or a
-        /// null entry: Timeline's default ease). The bones are put back as they were.
+        /// null entry: Timeline's default ease). With <see cref="RootTravelMode.TransformOffset"/> the track places the
+        /// character itself, every frame, where <see cref="TrackRootPath"/> has it: under <paramref name="trackOffset"/>, each clip
+        /// as <paramref name="placements"/> says (null: every clip moving the root, at no offset, from its first frame); each
+        /// span lands on its second clip's placement. The bones and the character's own transform are put back as they were.
         /// </summary>
-        /// <exception cref="ArgumentException">Not one clip (or mix-in curve) per timing (<c>clips</c> or <c>mixIn</c> named), or two clips at one start.</exception>
+        /// <exception cref="ArgumentException">Not one clip (or mix-in curve, or placement) per timing (<c>clips</c>, <c>mixIn</c> or <c>placements</c> named), or two clips at one start.</exception>
         public void Build(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips, RootTravelMode rootTravel = RootTravelMode.None,
-            IReadOnlyList<AnimationCurve?>? mixIn = null)
+            IReadOnlyList<AnimationCurve?>? mixIn = null, RootPlacement trackOffset = default, IReadOnlyList<ClipPlacement>? placements = null)
         {
             if (timings == null) throw new ArgumentNullException(nameof(timings));
             if (clips == null) throw new ArgumentNullException(nameof(clips));
             if (clips.Count != timings.Count) throw new ArgumentException($"{clips.Count} clips for {timings.Count} timings; expected one clip per timing", nameof(clips));
             if (mixIn != null && mixIn.Count != timings.Count) throw new ArgumentException($"{mixIn.Count} mix-in curves for {timings.Count} timings; expected one per timing", nameof(mixIn));
+            if (placements != null && placements.Count != timings.Count) throw new ArgumentException($"{placements.Count} placements for {timings.Count} timings; expected one per timing", nameof(placements));
             _layout = TrackLayout.Create(timings);
             _blends = new BlendFrames?[_layout.Spans.Count];
             _travel = new SpanRootTravel?[_layout.Spans.Count];
+            _path = null;
             double[] saved = UnityPoses.Read(_bones, 0);
+            // Sampling a clip that keys the character's own transform moves it: put back with the bones.
+            Transform character = _animator.transform;
+            Vector3 savedPosition = character.localPosition;
+            Quaternion savedRotation = character.localRotation;
             try
             {
+                if (rootTravel == RootTravelMode.TransformOffset) _path = Path(timings, clips, trackOffset, placements);
                 for (int s = 0; s < _blends.Length; s++)
                 {
                     TrackSpan span = _layout.Spans[s];
@@ -134,7 +148,10 @@ namespace DeltaInterpolator.Unity
                         // Timeline weighs the second clip by its mix-in curve at the fraction of the overlap, clamped to 0..1 (TimelineClip.EvaluateMixIn).
                         AnimationCurve? curve = mixIn?[span.To];
                         Func<double, double>? weight = curve == null ? null : u => Math.Clamp((double)curve.Evaluate((float)u), 0.0, 1.0);
-                        _travel[s] = SpanRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, RootPlacement.Identity, out BlendFrames frames, warn, weight);
+                        // Transform offsets: the span lands where the second clip places the character (relative to where the first leaves it).
+                        RootPlacement arrival = _path != null ? _path.Arrival(s) : RootPlacement.Identity;
+                        _travel[s] = SpanRootPlan.Bake(s_cache, _model, _rig, span, fromPoses, toPoses, rootTravel, arrival, out BlendFrames frames, warn, weight);
+                        _path?.Travel(s, _travel[s]!, weight);
                         _blends[s] = frames;
                     }
                     else
@@ -145,6 +162,8 @@ namespace DeltaInterpolator.Unity
             }
             finally
             {
+                character.localPosition = savedPosition;
+                character.localRotation = savedRotation;
                 _bones[0].localPosition = new Vector3((float)saved[0], (float)saved[1], (float)saved[2]);
                 for (int b = 0; b < _bones.Length; b++)
                 {
@@ -152,6 +171,25 @@ namespace DeltaInterpolator.Unity
                     _bones[b].localRotation = new Quaternion((float)saved[at + 1], (float)saved[at + 2], (float)saved[at + 3], (float)saved[at]);
                 }
             }
+        }
+
+        /// <summary>
+        /// Where the character stands at any time with transform offsets: each clip's root motion sampled once (as the spans'
+        /// keys are) and placed by its offset; a clip that does not move the root, or has no animation, stands at the track's offset.
+        /// </summary>
+        private TrackRootPath Path(IReadOnlyList<TrackClipTiming> timings, IReadOnlyList<AnimationClip?> clips, RootPlacement trackOffset, IReadOnlyList<ClipPlacement>? placements)
+        {
+            var paths = new ClipRootPath[timings.Count];
+            for (int i = 0; i < paths.Length; i++)
+            {
+                ClipPlacement placement = placements != null ? placements[i] : new ClipPlacement(RootPlacement.Identity, true, true);
+                AnimationClip? clip = clips[i];
+                paths[i] = clip != null && placement.MovesRoot
+                    ? ClipRootPath.Sample(new AnimationClipPoses(clip, _animator.gameObject, _bones), _rig, timings[i].AnimationLength, timings[i].Loops, placement.Offset, placement.RemoveStartOffset)
+                    : ClipRootPath.Still(RootPlacement.Identity);
+            }
+
+            return new TrackRootPath(_layout, trackOffset, paths);
         }
 
         /// <summary>The mixer: an animation job with <paramref name="inputCount"/> inputs, mixed by their weights (Timeline sets them) before the blend pose is laid over.</summary>
@@ -173,6 +211,7 @@ namespace DeltaInterpolator.Unity
             TrackMoment moment = _layout.Locate(time);
             BlendFrames? frames = moment.Kind == TrackMomentKind.Span ? _blends[moment.Span] : null;
             _rootVelocity[4] = 0;
+            if (_path != null) Place(time);
             if (frames == null || !frames.Sample(moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3)))
             {
                 _buffers.Weight[0] = 0;
@@ -183,16 +222,42 @@ namespace DeltaInterpolator.Unity
             if (travel != null && travel.Mode != RootTravelMode.None)
             {
                 travel.InPlace(_rig, moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3, 4));
-                travel.Velocity(moment.Fraction, _layout.Spans[moment.Span].Duration, out double x, out double z, out double yawRate);
-                _rootVelocity[0] = x;
-                _rootVelocity[1] = 0;
-                _rootVelocity[2] = z;
-                _rootVelocity[3] = yawRate;
-                _rootVelocity[4] = 1;
+                // Scene offsets: the travel's own velocity (with transform offsets Place has put the character on the path).
+                if (_path == null)
+                {
+                    travel.Velocity(moment.Fraction, _layout.Spans[moment.Span].Duration, out double x, out double z, out double yawRate);
+                    _rootVelocity[0] = x;
+                    _rootVelocity[1] = 0;
+                    _rootVelocity[2] = z;
+                    _rootVelocity[3] = yawRate;
+                    _rootVelocity[4] = 1;
+                }
             }
 
             _sample.AsSpan().CopyTo(_buffers.Pose.AsSpan());
             _buffers.Weight[0] = 1;
+        }
+
+        /// <summary>
+        /// Transform offsets: where the character stands now — the Animator's transform in its parent's space, the track's
+        /// space (Timeline's offsets are in the parent's) — and where the track has it at <paramref name="time"/>, for the job
+        /// to move it there in this frame whatever happened before (<see cref="RootVelocity"/>, with the frame's delta time).
+        /// </summary>
+        private void Place(double time)
+        {
+            Transform character = _animator.transform;
+            Vector3 p = character.localPosition;
+            Quaternion q = character.localRotation;
+            var current = RootPlacement.OfTransform(p.x, p.z, new QuaternionD(q.w, q.x, q.y, q.z));
+            RootPlacement target = _path!.At(time);
+            if (!(double.IsFinite(current.X) && double.IsFinite(current.Z) && double.IsFinite(current.Yaw))) return;
+            _rootVelocity[5] = current.X;
+            _rootVelocity[6] = current.Z;
+            _rootVelocity[7] = current.Yaw;
+            _rootVelocity[8] = target.X;
+            _rootVelocity[9] = target.Z;
+            _rootVelocity[10] = target.Yaw;
+            _rootVelocity[4] = 2;
         }
 
         /// <summary>Frees the job's buffers (the graph owns the playable).</summary>

@@ -1,4 +1,5 @@
 using System;
+using DeltaInterpolator.Core.Blends;
 using DeltaInterpolator.Core.Playback;
 using Unity.Collections;
 using UnityEngine;
@@ -13,7 +14,8 @@ namespace DeltaInterpolator.Unity
     /// (<see cref="PoseBlend.Apply"/>), elsewhere the weight is 0 and the clips play as they are. Root motion is the
     /// clips' own (the stream's velocity is left as their mix made it), except in a blend or gap whose root travels
     /// (<see cref="Core.Blends.SpanRootTravel"/>): there the main thread's velocity and turn rate replace it, in the
-    /// character's frame as Kinematica writes it (<c>unity-verification.md</c>).
+    /// character's frame as Kinematica writes it (<c>unity-verification.md</c>); and on a track that places its clips
+    /// (transform offsets) every frame, where the step onto the track's placement replaces it.
     /// Pose buffers hold the root position (3 values) then bones × 4 rotation values (w, x, y, z).
     /// </summary>
     internal struct TrackBlendJob : IAnimationJob
@@ -23,7 +25,11 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> Shown;
         public NativeArray<double> Weight;
 
-        /// <summary>[0..2] the span's root velocity (per second, character's frame), [3] its turn rate about +Y (rad/s), [4] 1 while a blend or gap travels.</summary>
+        /// <summary>
+        /// [0..2] the span's root velocity (per second, character's frame), [3] its turn rate about +Y (rad/s), [4] 1 while a blend
+        /// or gap travels; 2 where the track places the character (transform offsets): [5..7] where it stands, [8..10] where the
+        /// track has it now (x, z, yaw in its parent's space).
+        /// </summary>
         [ReadOnly]
         public NativeArray<double> RootVelocity;
 
@@ -33,6 +39,18 @@ namespace DeltaInterpolator.Unity
             // the clips' mix left: in a gap nothing (or a held extrapolation, whose time stands still), in a blend Timeline's
             // mix of both clips' root motion — which the travel ends where (its target key was placed there), on the model's path.
             if (RootVelocity[4] == 0) return;
+            if (RootVelocity[4] == 2)
+            {
+                // Transform offsets: the step from where the character stands to where the track has it, over the delta time
+                // the Animator applies this stream's velocity with — clips, spans and extrapolation alike, so the character is
+                // where Timeline's absolute root motion would put it whatever happened before (a jump, scrubbing back).
+                Core.Blends.RootVelocity.Toward(new RootPlacement(RootVelocity[5], RootVelocity[6], RootVelocity[7]),
+                    new RootPlacement(RootVelocity[8], RootVelocity[9], RootVelocity[10]), stream.deltaTime, out double x, out double z, out double yawRate);
+                stream.velocity = new Vector3((float)x, 0, (float)z);
+                stream.angularVelocity = new Vector3(0, (float)yawRate, 0);
+                return;
+            }
+
             stream.velocity = new Vector3((float)RootVelocity[0], (float)RootVelocity[1], (float)RootVelocity[2]);
             stream.angularVelocity = new Vector3(0, (float)RootVelocity[3], 0);
         }

@@ -70,6 +70,44 @@ namespace DeltaInterpolator.Core.Blends
         }
 
         /// <summary>
+        /// Where an object stands on the ground given its position and rotation in its parent's space (Unity's
+        /// <c>Transform.localPosition</c>, <c>localRotation</c>): its x and z, and its facing — the rotation applied to +Z,
+        /// projected on the ground (an object facing straight up or down faces 0). Height, pitch and roll are not kept.
+        /// </summary>
+        /// <param name="x">Position along x.</param>
+        /// <param name="z">Position along z.</param>
+        /// <param name="rotation">The rotation (w, x, y, z; normalised or not).</param>
+        public static RootPlacement OfTransform(double x, double z, QuaternionD rotation)
+        {
+            Vector3D facing = Quaternions.Apply(rotation, new Vector3D(0, 0, 1));
+            double yaw = facing.X * facing.X + facing.Z * facing.Z < 1e-12 ? 0 : Math.Atan2(facing.X, facing.Z);
+            return new RootPlacement(x, z, yaw);
+        }
+
+        /// <summary>
+        /// A Timeline offset — an Animation Track's or a clip's position and Euler angles (degrees, Unity's Z-X-Y order,
+        /// <c>Quaternion.Euler</c>) — as a placement on the ground: its x and z, and the yaw its rotation faces
+        /// (the rotation applied to +Z, projected on the ground). A height or a pitch or roll cannot be a placement on the
+        /// ground: they are left out and <paramref name="flattened"/> says so (the caller says it once).
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">A value that is not finite (the parameter named).</exception>
+        public static RootPlacement OfOffset(double x, double y, double z, double pitch, double yaw, double roll, out bool flattened)
+        {
+            Finite(x, nameof(x));
+            Finite(y, nameof(y));
+            Finite(z, nameof(z));
+            Finite(pitch, nameof(pitch));
+            Finite(yaw, nameof(yaw));
+            Finite(roll, nameof(roll));
+            // Unity's Euler rotation is Y·X·Z: Z (roll) leaves +Z where it is, X (pitch) tips it to (0, −sin p, cos p), Y turns
+            // that about +Y: its ground direction is cos p · (sin y, cos y), the yaw itself unless the pitch turns it over.
+            double p = pitch * Math.PI / 180, w = yaw * Math.PI / 180, c = Math.Cos(p);
+            double facing = Math.Abs(c) < 1e-9 ? w : c > 0 ? w : w + Math.PI;
+            flattened = y != 0 || Math.IEEERemainder(pitch, 360) != 0 || Math.IEEERemainder(roll, 360) != 0;
+            return new RootPlacement(x, z, facing);
+        }
+
+        /// <summary>
         /// Moves a pose of <paramref name="rig"/> by this placement taken as a motion of the ground: its root bone's position
         /// turned by <see cref="Yaw"/> about the character's origin and moved by (<see cref="X"/>, <see cref="Z"/>), its
         /// rotation turned by <see cref="Yaw"/>; height and every other bone unchanged. Allocation-free.
@@ -83,6 +121,11 @@ namespace DeltaInterpolator.Core.Blends
             QuaternionD turn = new QuaternionD(Math.Cos(Yaw / 2), 0, Math.Sin(Yaw / 2), 0);
             QuaternionD q = Quaternions.Multiply(turn, armature.RotationToParent(QuaternionD.Read(rootRotation, 0)));
             armature.RotationFromParent(q).Write(rootRotation, 0);
+        }
+
+        private static void Finite(double value, string name)
+        {
+            if (!double.IsFinite(value)) throw new ArgumentOutOfRangeException(name, value, "expected a finite offset (a position in units, an angle in degrees)");
         }
 
         /// <inheritdoc />

@@ -133,10 +133,7 @@ namespace DeltaInterpolator.Core.Blends
             Segment(fraction, out int k, out _);
             double frameSeconds = seconds / (_frames.Length - 1);
             RootPlacement here = At(fraction), a = _frames[k], b = _frames[k + 1];
-            RootPlacement step = new RootPlacement(here.X, here.Z, here.Yaw).StepTo(new RootPlacement(here.X + b.X - a.X, here.Z + b.Z - a.Z, here.Yaw + b.Yaw - a.Yaw));
-            x = step.X / frameSeconds;
-            z = step.Z / frameSeconds;
-            yawRate = step.Yaw / frameSeconds;
+            RootVelocity.Toward(here, new RootPlacement(here.X + b.X - a.X, here.Z + b.Z - a.Z, here.Yaw + b.Yaw - a.Yaw), frameSeconds, out x, out z, out yawRate);
         }
 
         /// <summary>

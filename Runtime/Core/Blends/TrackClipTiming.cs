@@ -83,6 +83,20 @@ namespace DeltaInterpolator.Core.Blends
         /// </summary>
         public double ExtrapolatedTime(double trackTime, TrackExtrapolation mode)
         {
+            double unwrapped = PlayedTime(trackTime, mode);
+            if (!Loops) return Math.Max(0, Math.Min(AnimationLength, unwrapped));
+            double wrapped = unwrapped % AnimationLength;
+            return wrapped < 0 ? wrapped + AnimationLength : wrapped;
+        }
+
+        /// <summary>
+        /// The time the clip's playable is given at track time <paramref name="trackTime"/> when it plays by
+        /// <paramref name="mode"/> there (<see cref="TrackExtrapolation.None"/> inside the clip): the time since the clip's start,
+        /// extrapolated over its duration as <see cref="ExtrapolatedTime"/> does, at the clip's speed from its clip-in — not
+        /// wrapped into the animation nor held at its ends, so that a looping clip's root motion can count its cycles.
+        /// </summary>
+        public double PlayedTime(double trackTime, TrackExtrapolation mode)
+        {
             double time = trackTime - Start, duration = Duration;
             switch (mode)
             {
@@ -100,10 +114,7 @@ namespace DeltaInterpolator.Core.Blends
                     break;
             }
 
-            double unwrapped = ClipIn + time * Speed;
-            if (!Loops) return Math.Max(0, Math.Min(AnimationLength, unwrapped));
-            double wrapped = unwrapped % AnimationLength;
-            return wrapped < 0 ? wrapped + AnimationLength : wrapped;
+            return ClipIn + time * Speed;
         }
 
         /// <summary>

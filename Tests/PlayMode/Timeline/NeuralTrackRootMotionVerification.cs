@@ -32,7 +32,8 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
     /// (b) where the gap and the blend start and end the hips' world position does not jump against the clips' own steps;
     /// (c) after each span the character moves exactly as its twin does, from where the span left it (scene offsets);
     /// (d) nothing is logged. The track's times, the checks and their bounds are <see cref="TrackMotionChecks"/>'s (engine-free,
-    /// shown there to fail on recordings of the faults they are for).
+    /// shown there to fail on recordings of the faults they are for). Those tracks are set to Apply Scene Offsets; a third test
+    /// checks Apply Transform Offsets, the track's default (<see cref="TransformOffsetChecks"/>).
     /// </summary>
     /// <remarks>
     /// Editor only (it imports the sample's <c>.bvh</c> files into a temporary folder under Assets, removed afterwards) and
@@ -57,6 +58,84 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
         [UnityTest]
         public IEnumerator AHumanoidFigureWalksThroughAGapAndABlendWithoutStoppingOrPoppingAndPlaysOnFromWhereTheyLeftIt() => Run(humanoid: true);
 
+        /// <summary>
+        /// Transform offsets (the track's default): a generic figure started elsewhere stands where the track's and each clip's
+        /// offsets place it when each Walk starts (e), and after the playhead is set back it stands where it stood at the same
+        /// times before (f); nothing is logged. Checks and bounds: <see cref="TransformOffsetChecks"/>.
+        /// </summary>
+        [UnityTest]
+        public IEnumerator AGenericFigureOnATransformOffsetTrackStandsWhereTheOffsetsPlaceItEvenAfterAJumpBack()
+        {
+            var rig = Rig.Import(humanoid: false);
+            try
+            {
+                GameObject figure = rig.Figure(new Vector3(5f, 0f, 5f), 200f); // anywhere: the track places it
+                var timeline = ScriptableObject.CreateInstance<TimelineAsset>();
+                rig.Keep(timeline);
+                NeuralAnimationTrack track = rig.Track(timeline, "Transform offsets", TrackOffset.ApplyTransformOffsets);
+                track.Position = new Vector3((float)TransformOffsetChecks.Track.X, 0f, (float)TransformOffsetChecks.Track.Z);
+                track.EulerAngles = new Vector3(0f, (float)TransformOffsetChecks.Track.YawDegrees, 0f);
+                Offset(rig.Place(track, rig.Walk, 0.0, TransformOffsetChecks.FirstEnd), TransformOffsetChecks.FirstWalk);
+                Offset(rig.Place(track, rig.Walk, TransformOffsetChecks.SecondStart, TransformOffsetChecks.SecondEnd - TransformOffsetChecks.SecondStart), TransformOffsetChecks.SecondWalk);
+
+                var directorObject = new GameObject("Director");
+                rig.Keep(directorObject);
+                var director = directorObject.AddComponent<PlayableDirector>();
+                director.playableAsset = timeline;
+                director.SetGenericBinding(track, figure.GetComponent<Animator>());
+                var recorder = directorObject.AddComponent<TrackRecorder>();
+                recorder.Figures = new[] { figure.transform };
+                recorder.Hips = new[] { rig.Hips(figure) };
+                recorder.Director = director;
+                director.Play();
+
+                double started = Time.timeAsDouble;
+                bool jumped = false;
+                while (true)
+                {
+                    Assert.That(Time.timeAsDouble - started, Is.LessThan(2 * TransformOffsetChecks.SecondEnd + Timeout), "the timeline plays past the jump and to the first Walk's end again");
+                    if (!jumped && director.time >= TransformOffsetChecks.JumpAt)
+                    {
+                        director.time = TransformOffsetChecks.JumpBackTo;
+                        jumped = true;
+                    }
+                    else if (jumped && director.time >= TransformOffsetChecks.FirstEnd + 0.1) break;
+                    yield return null;
+                }
+
+                // The walk's own speed, from the first pass (the character's ground speed where the first Walk plays).
+                List<TrackMotionFrame> frames = recorder.Frames;
+                double fastest = 0;
+                for (int i = 1; i < frames.Count && frames[i].Time >= frames[i - 1].Time && frames[i].Time <= TransformOffsetChecks.FirstEnd; i++)
+                {
+                    double dt = frames[i].Time - frames[i - 1].Time;
+                    if (frames[i - 1].Time < WalkFrom || dt <= 1e-6) continue;
+                    FigurePlace a = frames[i - 1].Figures[0], b = frames[i].Figures[0];
+                    fastest = Math.Max(fastest, Math.Sqrt((b.X - a.X) * (b.X - a.X) + (b.Z - a.Z) * (b.Z - a.Z)) / dt);
+                }
+
+                var failures = new List<string>();
+                TransformOffsetChecks.StartsAtTheOffset(frames, 0.0, TransformOffsetChecks.Placed(TransformOffsetChecks.FirstWalk), StepMargin * fastest, "the first Walk", failures, TestContext.Out);
+                TransformOffsetChecks.StartsAtTheOffset(frames, TransformOffsetChecks.SecondStart, TransformOffsetChecks.Placed(TransformOffsetChecks.SecondWalk), StepMargin * fastest, "the second Walk", failures, TestContext.Out);
+                TransformOffsetChecks.StandsWhereItStoodAtTheSameTime(frames, failures, TestContext.Out);
+                foreach (string failure in failures) TestContext.Out.WriteLine(failure);
+                LogAssert.NoUnexpectedReceived();
+                Assert.That(fastest, Is.GreaterThan(0.1), "the walk moves the character (the track sees root motion and the Animator applies the job's velocity)");
+                Assert.That(failures, Is.Empty, $"transform offsets: {failures.Count} comparisons of (e)-(f) failed (all in the test's output); the first: {(failures.Count > 0 ? failures[0] : "")}");
+            }
+            finally
+            {
+                rig.Dispose();
+            }
+        }
+
+        private static void Offset(TimelineClip clip, (double X, double Z, double YawDegrees) offset)
+        {
+            var asset = (AnimationPlayableAsset)clip.asset;
+            asset.position = new Vector3((float)offset.X, 0f, (float)offset.Z);
+            asset.eulerAngles = new Vector3(0f, (float)offset.YawDegrees, 0f);
+        }
+
         private static IEnumerator Run(bool humanoid)
         {
             var rig = Rig.Import(humanoid);
@@ -77,13 +156,14 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
 
                 var timeline = ScriptableObject.CreateInstance<TimelineAsset>();
                 rig.Keep(timeline);
-                var neural = rig.Track(timeline, "Neural blends");
+                // Scene offsets: each clip plays on from where the character stands, so (c) compares the character's moves with its twins'.
+                var neural = rig.Track(timeline, "Neural blends", TrackOffset.ApplySceneOffsets);
                 rig.Place(neural, rig.Walk, 0.0, GapStart);
                 rig.Place(neural, rig.Walk, GapEnd, BlendEnd - GapEnd);
                 rig.Place(neural, rig.Jump, BlendStart, End - BlendStart);
-                var walkAlone = rig.Track(timeline, "Walk alone");
+                var walkAlone = rig.Track(timeline, "Walk alone", TrackOffset.ApplySceneOffsets);
                 rig.Place(walkAlone, rig.Walk, GapEnd, BlendEnd - GapEnd);
-                var jumpAlone = rig.Track(timeline, "Jump alone");
+                var jumpAlone = rig.Track(timeline, "Jump alone", TrackOffset.ApplySceneOffsets);
                 rig.Place(jumpAlone, rig.Jump, BlendStart, End - BlendStart);
 
                 var directorObject = new GameObject("Director");
@@ -198,16 +278,17 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
                 return hips!;
             }
 
-            /// <summary>A Neural Animation Track on <paramref name="timeline"/> with this rig's settings.</summary>
-            public NeuralAnimationTrack Track(TimelineAsset timeline, string name)
+            /// <summary>A Neural Animation Track on <paramref name="timeline"/> with this rig's settings, placing the clips by <paramref name="offsets"/>.</summary>
+            public NeuralAnimationTrack Track(TimelineAsset timeline, string name, TrackOffset offsets)
             {
                 NeuralAnimationTrack track = Keep(timeline.CreateTrack<NeuralAnimationTrack>(null!, name));
                 track.Settings = _settings;
+                track.TrackOffset = offsets;
                 return track;
             }
 
             /// <summary><paramref name="clip"/> on <paramref name="track"/> from <paramref name="start"/> for <paramref name="duration"/> seconds, from its first frame.</summary>
-            public void Place(TrackAsset track, AnimationClip clip, double start, double duration)
+            public TimelineClip Place(TrackAsset track, AnimationClip clip, double start, double duration)
             {
                 TimelineClip placed = track.CreateClip<AnimationPlayableAsset>();
                 Keep(placed.asset);
@@ -216,6 +297,7 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
                 placed.duration = duration;
                 placed.clipIn = 0.0;
                 placed.displayName = clip.name;
+                return placed;
             }
 
             public T Keep<T>(T made) where T : Object

@@ -14,6 +14,12 @@ namespace UnityEngine.Timeline
 
         public LoopMode loop { get => throw null!; set => throw null!; }
 
+        public Vector3 position { get => throw null!; set => throw null!; }
+
+        public Vector3 eulerAngles { get => throw null!; set => throw null!; }
+
+        public bool removeStartOffset { get => throw null!; set => throw null!; }
+
         public AnimationClip clip { get => throw null!; set => throw null!; }
 
         public override Playable CreatePlayable(PlayableGraph graph, GameObject go) => throw null!;
