@@ -46,9 +46,8 @@ namespace DeltaInterpolator.Unity
         private readonly BlendModel _model;
         private readonly PoseBlendBuffers _buffers;
         private readonly double[] _sample;
-        // [0..2] the span's root velocity in the character's frame (per second), [3] its turn rate about +Y (rad/s), [4] 1 while a
-        // blend or gap travels, 2 where the track places the character: [5..7] where it stands, [8..10] where it must (x, z, yaw).
-        private NativeArray<double> _rootVelocity = new NativeArray<double>(11, Allocator.Persistent);
+        // The root motion the job puts on the stream this frame (one element).
+        private NativeArray<TrackRootDrive> _root = new NativeArray<TrackRootDrive>(1, Allocator.Persistent);
         private TrackLayout _layout = TrackLayout.Create(Array.Empty<TrackClipTiming>());
         private BlendFrames?[] _blends = Array.Empty<BlendFrames?>();
         private SpanRootTravel?[] _travel = Array.Empty<SpanRootTravel?>();
@@ -195,7 +194,7 @@ namespace DeltaInterpolator.Unity
         /// <summary>The mixer: an animation job with <paramref name="inputCount"/> inputs, mixed by their weights (Timeline sets them) before the blend pose is laid over.</summary>
         public AnimationScriptPlayable CreatePlayable(PlayableGraph graph, int inputCount)
         {
-            var job = new TrackBlendJob { Bones = _buffers.Bones, Pose = _buffers.Pose, Shown = _buffers.Shown, Weight = _buffers.Weight, RootVelocity = _rootVelocity };
+            var job = new TrackBlendJob { Bones = _buffers.Bones, Pose = _buffers.Pose, Shown = _buffers.Shown, Weight = _buffers.Weight, Root = _root };
             AnimationScriptPlayable playable = AnimationScriptPlayable.Create(graph, job, inputCount);
             playable.SetProcessInputs(true);
             return playable;
@@ -210,7 +209,7 @@ namespace DeltaInterpolator.Unity
         {
             TrackMoment moment = _layout.Locate(time);
             BlendFrames? frames = moment.Kind == TrackMomentKind.Span ? _blends[moment.Span] : null;
-            _rootVelocity[4] = 0;
+            _root[0] = default;
             if (_path != null) Place(time);
             if (frames == null || !frames.Sample(moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3)))
             {
@@ -226,11 +225,7 @@ namespace DeltaInterpolator.Unity
                 if (_path == null)
                 {
                     travel.Velocity(moment.Fraction, _layout.Spans[moment.Span].Duration, out double x, out double z, out double yawRate);
-                    _rootVelocity[0] = x;
-                    _rootVelocity[1] = 0;
-                    _rootVelocity[2] = z;
-                    _rootVelocity[3] = yawRate;
-                    _rootVelocity[4] = 1;
+                    _root[0] = new TrackRootDrive { Kind = TrackRootDrive.Source.SpanTravel, VelocityX = x, VelocityZ = z, YawRate = yawRate };
                 }
             }
 
@@ -251,20 +246,14 @@ namespace DeltaInterpolator.Unity
             var current = RootPlacement.OfTransform(p.x, p.z, new QuaternionD(q.w, q.x, q.y, q.z));
             RootPlacement target = _path!.At(time);
             if (!(double.IsFinite(current.X) && double.IsFinite(current.Z) && double.IsFinite(current.Yaw))) return;
-            _rootVelocity[5] = current.X;
-            _rootVelocity[6] = current.Z;
-            _rootVelocity[7] = current.Yaw;
-            _rootVelocity[8] = target.X;
-            _rootVelocity[9] = target.Z;
-            _rootVelocity[10] = target.Yaw;
-            _rootVelocity[4] = 2;
+            _root[0] = new TrackRootDrive { Kind = TrackRootDrive.Source.Placement, Current = current, Target = target };
         }
 
         /// <summary>Frees the job's buffers (the graph owns the playable).</summary>
         public void Dispose()
         {
             _buffers.Dispose();
-            if (_rootVelocity.IsCreated) _rootVelocity.Dispose();
+            if (_root.IsCreated) _root.Dispose();
         }
     }
 }

@@ -25,34 +25,31 @@ namespace DeltaInterpolator.Unity
         public NativeArray<double> Shown;
         public NativeArray<double> Weight;
 
-        /// <summary>
-        /// [0..2] the span's root velocity (per second, character's frame), [3] its turn rate about +Y (rad/s), [4] 1 while a blend
-        /// or gap travels; 2 where the track places the character (transform offsets): [5..7] where it stands, [8..10] where the
-        /// track has it now (x, z, yaw in its parent's space).
-        /// </summary>
+        /// <summary>One element: the root motion the main thread decided for this frame.</summary>
         [ReadOnly]
-        public NativeArray<double> RootVelocity;
+        public NativeArray<TrackRootDrive> Root;
 
         public void ProcessRootMotion(AnimationStream stream)
         {
             // The Animator moves the character by what is on the stream, so the span's travel is written there, replacing what
             // the clips' mix left: in a gap nothing (or a held extrapolation, whose time stands still), in a blend Timeline's
             // mix of both clips' root motion — which the travel ends where (its target key was placed there), on the model's path.
-            if (RootVelocity[4] == 0) return;
-            if (RootVelocity[4] == 2)
+            TrackRootDrive root = Root[0];
+            switch (root.Kind)
             {
-                // Transform offsets: the step from where the character stands to where the track has it, over the delta time
-                // the Animator applies this stream's velocity with — clips, spans and extrapolation alike, so the character is
-                // where Timeline's absolute root motion would put it whatever happened before (a jump, scrubbing back).
-                Core.Blends.RootVelocity.Toward(new RootPlacement(RootVelocity[5], RootVelocity[6], RootVelocity[7]),
-                    new RootPlacement(RootVelocity[8], RootVelocity[9], RootVelocity[10]), stream.deltaTime, out double x, out double z, out double yawRate);
-                stream.velocity = new Vector3((float)x, 0, (float)z);
-                stream.angularVelocity = new Vector3(0, (float)yawRate, 0);
-                return;
+                case TrackRootDrive.Source.Placement:
+                    // Transform offsets: the step from where the character stands to where the track has it, over the delta time
+                    // the Animator applies this stream's velocity with — clips, spans and extrapolation alike, so the character is
+                    // where Timeline's absolute root motion would put it whatever happened before (a jump, scrubbing back).
+                    RootVelocity.Toward(root.Current, root.Target, stream.deltaTime, out double x, out double z, out double yawRate);
+                    stream.velocity = new Vector3((float)x, 0, (float)z);
+                    stream.angularVelocity = new Vector3(0, (float)yawRate, 0);
+                    break;
+                case TrackRootDrive.Source.SpanTravel:
+                    stream.velocity = new Vector3((float)root.VelocityX, 0, (float)root.VelocityZ);
+                    stream.angularVelocity = new Vector3(0, (float)root.YawRate, 0);
+                    break;
             }
-
-            stream.velocity = new Vector3((float)RootVelocity[0], (float)RootVelocity[1], (float)RootVelocity[2]);
-            stream.angularVelocity = new Vector3(0, (float)RootVelocity[3], 0);
         }
 
         public void ProcessAnimation(AnimationStream stream)
