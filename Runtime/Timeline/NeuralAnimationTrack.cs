@@ -184,6 +184,27 @@ namespace DeltaInterpolator.Timeline
             return placement;
         }
 
+        // The character's own transform, which the Editor preview of a transform-offset track sets (NeuralBlendLayer.Place).
+        private static readonly string[] s_placedProperties =
+        {
+            "m_LocalPosition.x", "m_LocalPosition.y", "m_LocalPosition.z",
+            "m_LocalRotation.x", "m_LocalRotation.y", "m_LocalRotation.z", "m_LocalRotation.w",
+        };
+
+        /// <inheritdoc />
+        /// <remarks>
+        /// Besides the clips' properties, the bound character's own position and rotation: outside Play mode a track that places
+        /// its clips puts the character where it stands at the playhead, and the preview gives the transform back when it ends
+        /// (as it does for the bones the clips animate).
+        /// </remarks>
+        public override void GatherProperties(PlayableDirector director, IPropertyCollector driver)
+        {
+            base.GatherProperties(director, driver);
+            Animator? animator = director != null ? director.GetGenericBinding(this) as Animator : null;
+            if (animator == null) return;
+            foreach (string property in s_placedProperties) driver.AddFromName<Transform>(animator.gameObject, property);
+        }
+
         /// <summary>Timeline's clip extrapolation as Core's (the same five modes).</summary>
         private static TrackExtrapolation Extrapolation(TimelineClip.ClipExtrapolation mode) => mode switch
         {

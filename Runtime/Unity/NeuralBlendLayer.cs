@@ -236,7 +236,8 @@ namespace DeltaInterpolator.Unity
         /// <summary>
         /// Transform offsets: where the character stands now — the Animator's transform in its parent's space, the track's
         /// space (Timeline's offsets are in the parent's) — and where the track has it at <paramref name="time"/>, for the job
-        /// to move it there in this frame whatever happened before (<see cref="RootVelocity"/>, with the frame's delta time).
+        /// to move it there in this frame whatever happened before (<see cref="RootVelocity"/>, with the frame's delta time);
+        /// outside Play mode the character is put there at once.
         /// </summary>
         private void Place(double time)
         {
@@ -246,6 +247,17 @@ namespace DeltaInterpolator.Unity
             var current = RootPlacement.OfTransform(p.x, p.z, new QuaternionD(q.w, q.x, q.y, q.z));
             RootPlacement target = _path!.At(time);
             if (!(double.IsFinite(current.X) && double.IsFinite(current.Z) && double.IsFinite(current.Yaw))) return;
+            if (!Application.isPlaying)
+            {
+                // An Editor preview may evaluate with no delta time (a paused scrub), and Timeline previews an Animation Track in
+                // absolute motion: put the character there directly, its height, pitch and roll kept (the track registers the
+                // transform with the preview, which gives it back when the preview ends), and leave the job nothing to move.
+                QuaternionD turned = RootPlacement.TurnedTo(new QuaternionD(q.w, q.x, q.y, q.z), target.Yaw);
+                character.localPosition = new Vector3((float)target.X, p.y, (float)target.Z);
+                character.localRotation = new Quaternion((float)turned.X, (float)turned.Y, (float)turned.Z, (float)turned.W);
+                current = target;
+            }
+
             _root[0] = new TrackRootDrive { Kind = TrackRootDrive.Source.Placement, Current = current, Target = target };
         }
 

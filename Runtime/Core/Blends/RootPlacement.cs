@@ -85,6 +85,18 @@ namespace DeltaInterpolator.Core.Blends
         }
 
         /// <summary>
+        /// <paramref name="rotation"/> turned about +Y (in its parent's space) until it faces <paramref name="yaw"/> as
+        /// <see cref="OfTransform"/> reads facings, its pitch and roll kept: what puts an object's rotation at a placement
+        /// directly, where a frame has no time to turn it by a turn rate (a paused Editor preview). An object facing straight
+        /// up or down (facing 0, as <see cref="OfTransform"/> reads it) is turned by the whole yaw.
+        /// </summary>
+        public static QuaternionD TurnedTo(QuaternionD rotation, double yaw)
+        {
+            double turn = yaw - OfTransform(0, 0, rotation).Yaw;
+            return Quaternions.Multiply(new QuaternionD(Math.Cos(turn / 2), 0, Math.Sin(turn / 2), 0), rotation);
+        }
+
+        /// <summary>
         /// A Timeline offset — an Animation Track's or a clip's position and Euler angles (degrees, Unity's Z-X-Y order,
         /// <c>Quaternion.Euler</c>) — as a placement on the ground: its x and z, and the yaw its rotation faces
         /// (the rotation applied to +Z, projected on the ground). A height or a pitch or roll cannot be a placement on the

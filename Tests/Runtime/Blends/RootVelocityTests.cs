@@ -102,5 +102,32 @@ namespace DeltaInterpolator.Tests.Blends
             QuaternionD tilted = Quaternions.Multiply(new QuaternionD(Math.Cos(h), 0, Math.Sin(h), 0), new QuaternionD(Math.Cos(t), Math.Sin(t), 0, 0));
             Assert.That(RootPlacement.OfTransform(0, 0, tilted).Yaw, Is.EqualTo(70 * Math.PI / 180).Within(1e-12));
         }
+
+        [Test]
+        public void ARotationTurnedToAFacingFacesItAndKeepsItsPitchAndRoll()
+        {
+            var random = new Random(2801);
+            double worstFacing = 0, worstTilt = 0;
+            for (int i = 0; i < 1000; i++)
+            {
+                // A character's rotation with some pitch and roll (under 60°, so it does not face straight up or down).
+                QuaternionD tilt = Quaternions.Multiply(
+                    new QuaternionD(Math.Cos(random.NextDouble() * 0.5 - 0.25), Math.Sin(random.NextDouble() * 0.5 - 0.25), 0, 0),
+                    new QuaternionD(Math.Cos(random.NextDouble() * 0.5 - 0.25), 0, 0, Math.Sin(random.NextDouble() * 0.5 - 0.25)));
+                double from = random.NextDouble() * 20 - 10, yaw = random.NextDouble() * 20 - 10;
+                QuaternionD rotation = Quaternions.Multiply(new QuaternionD(Math.Cos(from / 2), 0, Math.Sin(from / 2), 0), Quaternions.Normalize(tilt));
+                QuaternionD turned = RootPlacement.TurnedTo(rotation, yaw);
+                worstFacing = Math.Max(worstFacing, Math.Abs(Math.IEEERemainder(RootPlacement.OfTransform(0, 0, turned).Yaw - yaw, 2 * Math.PI)));
+                // Pitch and roll kept: the rotation relative to its own facing is the same before and after.
+                QuaternionD before = Quaternions.Multiply(Yaw(-RootPlacement.OfTransform(0, 0, rotation).Yaw), rotation);
+                QuaternionD after = Quaternions.Multiply(Yaw(-yaw), turned);
+                worstTilt = Math.Max(worstTilt, 1 - Math.Abs(before.W * after.W + before.X * after.X + before.Y * after.Y + before.Z * after.Z));
+            }
+
+            Assert.That(worstFacing, Is.LessThan(1e-9), "facing reached");
+            Assert.That(worstTilt, Is.LessThan(1e-12), "pitch and roll kept");
+        }
+
+        private static QuaternionD Yaw(double angle) => new QuaternionD(Math.Cos(angle / 2), 0, Math.Sin(angle / 2), 0);
     }
 }

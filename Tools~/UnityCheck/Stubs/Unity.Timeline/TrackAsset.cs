@@ -14,6 +14,8 @@ namespace UnityEngine.Timeline
 
         public override IEnumerable<PlayableBinding> outputs => throw null!;
 
+        public virtual void GatherProperties(PlayableDirector director, IPropertyCollector driver) => throw null!;
+
         public TimelineClip CreateClip<T>()
             where T : ScriptableObject, IPlayableAsset => throw null!;
     }
