@@ -82,7 +82,7 @@ namespace DeltaInterpolator.Editor.Baking
                 AnimationMode.BeginSampling();
                 AnimationMode.SampleAnimationClip(character, clip, (float)times[i]);
                 AnimationMode.EndSampling();
-                BonePose.Read(bones, root, rotations);
+                UnityPoses.Read(bones, 0, root, rotations);
                 track.SetUnityPose(frames[i], root, rotations);
             }
         }
@@ -116,12 +116,7 @@ namespace DeltaInterpolator.Editor.Baking
                 for (int f = 0; f < frames; f++)
                 {
                     CharacterPoseTrack.ReadUnityPose(rig, motion, f, root, rotations);
-                    for (int b = 0; b < bones.Length; b++)
-                    {
-                        bones[b].localRotation = new Quaternion((float)rotations[4 * b + 1], (float)rotations[4 * b + 2], (float)rotations[4 * b + 3], (float)rotations[4 * b]);
-                    }
-
-                    bones[0].localPosition = new Vector3((float)root[0], (float)root[1], (float)root[2]);
+                    UnityPoses.Apply(bones, 0, root, rotations);
                     handler.GetHumanPose(ref pose);
                     recording.Record(f, pose);
                 }

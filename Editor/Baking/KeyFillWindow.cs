@@ -358,7 +358,7 @@ namespace DeltaInterpolator.Editor.Baking
         private static double[] ScenePose(Transform[] bones)
         {
             var pose = new double[3 + 4 * bones.Length];
-            BonePose.Read(bones, pose.AsSpan(0, 3), pose.AsSpan(3));
+            UnityPoses.Read(bones, 0, pose.AsSpan(0, 3), pose.AsSpan(3));
             return pose;
         }
     }

@@ -28,7 +28,7 @@ namespace DeltaInterpolator.Unity
         public void Sample(double time, Span<double> rootPosition, Span<double> localRotations)
         {
             _clip.SampleAnimation(_character, (float)time);
-            BonePose.Read(_bones, rootPosition, localRotations);
+            UnityPoses.Read(_bones, 0, rootPosition, localRotations);
         }
     }
 }

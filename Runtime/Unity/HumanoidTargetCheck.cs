@@ -39,7 +39,7 @@ namespace DeltaInterpolator.Unity
             if (!_animator.isHuman || _unavailable) return;
             if (_copy == null && !Copy()) return;
             clip.SampleAnimation(_copy!, time);
-            BonePose.ReadRotations(_copyBones!, _reference);
+            UnityPoses.ReadRotations(_copyBones!, _reference);
 
             string? differs = SampledTargetCheck.Compare(target.Slice(3), _reference, clip.name, time, b => _bones[b].name);
             if (differs != null) Debug.LogWarning(_animator.name + ": " + differs, _animator);

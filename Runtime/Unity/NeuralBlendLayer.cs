@@ -163,12 +163,7 @@ namespace DeltaInterpolator.Unity
             {
                 character.localPosition = savedPosition;
                 character.localRotation = savedRotation;
-                _bones[0].localPosition = new Vector3((float)saved[0], (float)saved[1], (float)saved[2]);
-                for (int b = 0; b < _bones.Length; b++)
-                {
-                    int at = 3 + 4 * b;
-                    _bones[b].localRotation = new Quaternion((float)saved[at + 1], (float)saved[at + 2], (float)saved[at + 3], (float)saved[at]);
-                }
+                UnityPoses.Apply(_bones, 0, saved.AsSpan(0, 3), saved.AsSpan(3));
             }
         }
 
@@ -246,7 +241,7 @@ namespace DeltaInterpolator.Unity
             Quaternion q = character.localRotation;
             var current = RootPlacement.OfTransform(p.x, p.z, new QuaternionD(q.w, q.x, q.y, q.z));
             RootPlacement target = _path!.At(time);
-            if (!(double.IsFinite(current.X) && double.IsFinite(current.Z) && double.IsFinite(current.Yaw))) return;
+            if (!current.IsFinite) return;
             if (!Application.isPlaying)
             {
                 // An Editor preview may evaluate with no delta time (a paused scrub), and Timeline previews an Animation Track in
