@@ -68,7 +68,7 @@ namespace DeltaInterpolator.Core.Blends
             if (rig == null) throw new ArgumentNullException(nameof(rig));
             if (!(animationLength > 0) || double.IsInfinity(animationLength)) throw new ArgumentOutOfRangeException(nameof(animationLength), animationLength, "expected an animation length above 0 seconds");
             if (!(samplesPerSecond > 0) || double.IsInfinity(samplesPerSecond)) throw new ArgumentOutOfRangeException(nameof(samplesPerSecond), samplesPerSecond, "expected a sampling rate above 0 per second");
-            Finite(offset, nameof(offset));
+            RootPlacement.RequireFinite(offset, nameof(offset));
             double count = Math.Ceiling(animationLength * samplesPerSecond);
             if (count > 1e6) throw new ArgumentOutOfRangeException(nameof(samplesPerSecond), samplesPerSecond, $"{count} samples of a {animationLength} s animation; expected at most a million (a lower rate)");
             int intervals = Math.Max(1, (int)count);
@@ -94,7 +94,7 @@ namespace DeltaInterpolator.Core.Blends
         /// </summary>
         public static ClipRootPath Still(RootPlacement offset)
         {
-            Finite(offset, nameof(offset));
+            RootPlacement.RequireFinite(offset, nameof(offset));
             return new ClipRootPath(new[] { RootPlacement.Identity }, 1, false, offset, offset, RootPlacement.Identity);
         }
 
@@ -143,14 +143,6 @@ namespace DeltaInterpolator.Core.Blends
             }
 
             return result;
-        }
-
-        private static void Finite(RootPlacement placement, string name)
-        {
-            if (!(double.IsFinite(placement.X) && double.IsFinite(placement.Z) && double.IsFinite(placement.Yaw)))
-            {
-                throw new ArgumentOutOfRangeException(name, placement.ToString(), "expected a finite position and yaw");
-            }
         }
     }
 }

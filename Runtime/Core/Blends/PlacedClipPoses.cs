@@ -19,10 +19,7 @@ namespace DeltaInterpolator.Core.Blends
         {
             _clip = clip ?? throw new ArgumentNullException(nameof(clip));
             _rig = rig ?? throw new ArgumentNullException(nameof(rig));
-            if (!(double.IsFinite(placement.X) && double.IsFinite(placement.Z) && double.IsFinite(placement.Yaw)))
-            {
-                throw new ArgumentOutOfRangeException(nameof(placement), placement.ToString(), "expected a finite position and yaw");
-            }
+            RootPlacement.RequireFinite(placement, nameof(placement));
 
             _placement = placement;
         }

@@ -20,6 +20,9 @@ namespace DeltaInterpolator.Core.Blends
             Yaw = yaw;
         }
 
+        /// <summary>Whether the position and yaw are all finite numbers.</summary>
+        public bool IsFinite => double.IsFinite(X) && double.IsFinite(Z) && double.IsFinite(Yaw);
+
         /// <summary>The origin, facing +Z.</summary>
         public static RootPlacement Identity => new RootPlacement(0, 0, 0);
 
@@ -133,6 +136,13 @@ namespace DeltaInterpolator.Core.Blends
             QuaternionD turn = new QuaternionD(Math.Cos(Yaw / 2), 0, Math.Sin(Yaw / 2), 0);
             QuaternionD q = Quaternions.Multiply(turn, armature.RotationToParent(QuaternionD.Read(rootRotation, 0)));
             armature.RotationFromParent(q).Write(rootRotation, 0);
+        }
+
+        /// <summary>Refuses a placement that is not finite, naming the parameter <paramref name="name"/>.</summary>
+        /// <exception cref="ArgumentOutOfRangeException">A position or yaw that is not finite.</exception>
+        internal static void RequireFinite(RootPlacement placement, string name)
+        {
+            if (!placement.IsFinite) throw new ArgumentOutOfRangeException(name, placement.ToString(), "expected a finite position and yaw");
         }
 
         private static void Finite(double value, string name)

@@ -21,8 +21,8 @@ namespace DeltaInterpolator.Core.Blends
         /// <exception cref="ArgumentOutOfRangeException">A placement that is not finite (<c>current</c> or <c>target</c> named).</exception>
         public static void Toward(RootPlacement current, RootPlacement target, double seconds, out double x, out double z, out double yawRate)
         {
-            Finite(current, nameof(current));
-            Finite(target, nameof(target));
+            RootPlacement.RequireFinite(current, nameof(current));
+            RootPlacement.RequireFinite(target, nameof(target));
             if (!(seconds > 0) || double.IsInfinity(seconds))
             {
                 x = z = yawRate = 0;
@@ -36,14 +36,6 @@ namespace DeltaInterpolator.Core.Blends
             x = step.X / seconds;
             z = step.Z / seconds;
             yawRate = turn / seconds;
-        }
-
-        private static void Finite(RootPlacement placement, string name)
-        {
-            if (!(double.IsFinite(placement.X) && double.IsFinite(placement.Z) && double.IsFinite(placement.Yaw)))
-            {
-                throw new ArgumentOutOfRangeException(name, placement.ToString(), "expected a finite position and yaw");
-            }
         }
     }
 }

@@ -23,7 +23,19 @@ namespace DeltaInterpolator.Core.Blends
             _clips = clips;
             _order = order;
             _spans = spans;
+            FirstClip = order.Length > 0 ? order[0] : -1;
+            LastClip = FirstClip;
+            for (int k = 1; k < order.Length; k++)
+            {
+                if (clips[order[k]].End >= clips[LastClip].End) LastClip = order[k];
+            }
         }
+
+        /// <summary>The clip that starts first (its pre-extrapolation plays before it), −1 with no clips.</summary>
+        public int FirstClip { get; }
+
+        /// <summary>The clip that ends last, the later-starting one of a tie (its post-extrapolation plays after it), −1 with no clips.</summary>
+        public int LastClip { get; }
 
         /// <summary>The clips as given.</summary>
         public IReadOnlyList<TrackClipTiming> Clips => _clips;
@@ -96,28 +108,22 @@ namespace DeltaInterpolator.Core.Blends
             // Outside every clip and span: before the first clip (from time 0, Timeline's first pre-extrapolation) and after the
             // clip that ends last, their extrapolation plays as on an Animation Track (Timeline 1.8.10
             // Runtime/Utilities/Extrapolation.cs:28-49, Runtime/TimelineClip.cs:717-731).
-            if (_order.Length > 0)
+            if (FirstClip >= 0)
             {
-                TrackClipTiming first = _clips[_order[0]];
+                TrackClipTiming first = _clips[FirstClip];
                 if (time < first.Start)
                 {
                     if (time >= 0 && first.PreExtrapolation != TrackExtrapolation.None)
                     {
-                        return new TrackMoment(TrackMomentKind.Clip, _order[0], first.ExtrapolatedTime(time, first.PreExtrapolation), -1, 0, first.PreExtrapolation);
+                        return new TrackMoment(TrackMomentKind.Clip, FirstClip, first.ExtrapolatedTime(time, first.PreExtrapolation), -1, 0, first.PreExtrapolation);
                     }
                 }
                 else
                 {
-                    int last = _order[0];
-                    for (int k = 1; k < _order.Length; k++)
-                    {
-                        if (_clips[_order[k]].End >= _clips[last].End) last = _order[k];
-                    }
-
-                    TrackClipTiming clip = _clips[last];
+                    TrackClipTiming clip = _clips[LastClip];
                     if (time > clip.End && clip.PostExtrapolation != TrackExtrapolation.None)
                     {
-                        return new TrackMoment(TrackMomentKind.Clip, last, clip.ExtrapolatedTime(time, clip.PostExtrapolation), -1, 0, clip.PostExtrapolation);
+                        return new TrackMoment(TrackMomentKind.Clip, LastClip, clip.ExtrapolatedTime(time, clip.PostExtrapolation), -1, 0, clip.PostExtrapolation);
                     }
                 }
             }

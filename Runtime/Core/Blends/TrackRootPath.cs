@@ -34,7 +34,6 @@ namespace DeltaInterpolator.Core.Blends
         // Per span: the travel's sampled frame carried into the track's space.
         private readonly RootPlacement[] _travelFrame;
         private readonly Func<double, double>?[] _blendIn;
-        private readonly int _first = -1, _last = -1;
 
         /// <summary>The path of the clips of <paramref name="layout"/> (one <see cref="ClipRootPath"/> each, in its order) under the track's offset <paramref name="trackOffset"/>.</summary>
         /// <exception cref="ArgumentException">Not one clip path per clip of the layout (<c>clips</c> named).</exception>
@@ -44,19 +43,13 @@ namespace DeltaInterpolator.Core.Blends
             _layout = layout ?? throw new ArgumentNullException(nameof(layout));
             if (clips == null) throw new ArgumentNullException(nameof(clips));
             if (clips.Count != layout.Clips.Count) throw new ArgumentException($"{clips.Count} clip paths for {layout.Clips.Count} clips; expected one per clip of the layout", nameof(clips));
-            if (!(double.IsFinite(trackOffset.X) && double.IsFinite(trackOffset.Z) && double.IsFinite(trackOffset.Yaw)))
-            {
-                throw new ArgumentOutOfRangeException(nameof(trackOffset), trackOffset.ToString(), "expected a finite position and yaw");
-            }
+            RootPlacement.RequireFinite(trackOffset, nameof(trackOffset));
 
             _track = trackOffset;
             _clips = new ClipRootPath[clips.Count];
             for (int i = 0; i < _clips.Length; i++)
             {
                 _clips[i] = clips[i] ?? throw new ArgumentException($"clip path {i} is null; expected one for every clip (ClipRootPath.Still for a clip that does not move the root)", nameof(clips));
-                TrackClipTiming c = layout.Clips[i];
-                if (_first < 0 || c.Start < layout.Clips[_first].Start) _first = i;
-                if (_last < 0 || c.End >= layout.Clips[_last].End) _last = i;
             }
 
             _travel = new SpanRootTravel?[layout.Spans.Count];
@@ -106,9 +99,10 @@ namespace DeltaInterpolator.Core.Blends
                 case TrackMomentKind.Span:
                     return InSpan(moment.Span, moment.Fraction, time);
                 default:
-                    if (_first < 0) return _track;
-                    TrackClipTiming first = _layout.Clips[_first], last = _layout.Clips[_last];
-                    return time < first.Start ? Clip(_first, first.PlayedTime(first.Start, TrackExtrapolation.None)) : Clip(_last, last.PlayedTime(last.End, TrackExtrapolation.None));
+                    int firstClip = _layout.FirstClip, lastClip = _layout.LastClip;
+                    if (firstClip < 0) return _track;
+                    TrackClipTiming first = _layout.Clips[firstClip], last = _layout.Clips[lastClip];
+                    return time < first.Start ? Clip(firstClip, first.PlayedTime(first.Start, TrackExtrapolation.None)) : Clip(lastClip, last.PlayedTime(last.End, TrackExtrapolation.None));
             }
         }
 
