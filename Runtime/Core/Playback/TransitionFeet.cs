@@ -1,8 +1,8 @@
 using System;
-using System.Collections.Generic;
 using DeltaInterpolator.Core.Characters;
 using DeltaInterpolator.Core.Feet;
 using DeltaInterpolator.Core.Inbetweening;
+using DeltaInterpolator.Core.Inference;
 using DeltaInterpolator.Core.Scheduling;
 using DeltaInterpolator.Core.Skeletons;
 
@@ -25,8 +25,8 @@ namespace DeltaInterpolator.Core.Playback
         private readonly double[] _startRoot = new double[3];
         private readonly double[] _startRotations;
         private readonly double _frameTime;
-        // The span clips and their keys, one per transition shape (past frames, missing frames), reused.
-        private readonly Dictionary<long, (MotionClip Clip, int[] Keys)> _spans = new Dictionary<long, (MotionClip Clip, int[] Keys)>();
+        // The span clips and their keys, one per transition shape (P, n), reused.
+        private readonly ShapeCache<PlannedSpan> _spans = new ShapeCache<PlannedSpan>();
         private readonly FootContacts _contacts = new FootContacts();
         private bool _planned;
 
@@ -111,16 +111,15 @@ namespace DeltaInterpolator.Core.Playback
             _planned = true;
             int past = t.PastFrames, n = t.MissingFrames, frames = past + n + 1;
             Skeleton s = Locker.Rig.Skeleton;
-            long shape = ((long)past << 32) | (uint)n;
-            if (!_spans.TryGetValue(shape, out (MotionClip Clip, int[] Keys) span))
+            PlannedSpan? span = _spans.Find(past, n);
+            if (span == null)
             {
                 var positions = new double[frames * 3 * s.JointCount];
                 for (int i = 0; i < frames; i++) s.OffsetSpan.CopyTo(positions.AsSpan(i * 3 * s.JointCount));
                 var keys = new int[past + 1];
                 for (int k = 0; k < past; k++) keys[k] = k;
                 keys[past] = frames - 1;
-                span = (new MotionClip(s, frames, _frameTime, positions, new double[frames * 4 * s.JointCount]), keys);
-                _spans.Add(shape, span);
+                span = _spans.Add(past, n, new PlannedSpan(new MotionClip(s, frames, _frameTime, positions, new double[frames * 4 * s.JointCount]), keys));
             }
 
             int jr = 4 * t.Skeleton.JointCount;
@@ -155,5 +154,8 @@ namespace DeltaInterpolator.Core.Playback
 
             Locker.PlanSpan(span.Clip, span.Keys, span.Keys.Length - 2, contacts);
         }
+
+        /// <summary>A transition shape's span on the locker's skeleton and its key frames (the past keys and the target).</summary>
+        private sealed record PlannedSpan(MotionClip Clip, int[] Keys);
     }
 }
