@@ -126,55 +126,35 @@ namespace DeltaInterpolator.Benchmarks
 
         /// <summary>One rendered frame of every character playing a transition: the pose shown locked as it is shown (the clip's own pose copied in first).</summary>
         [Benchmark]
-        public void PlaybackFrame()
-        {
-            _frame = _frame % (Frames - 2) + 1;
-            if (_frame == 1) BeginTransitions();
-            for (int c = 0; c < _live.Length; c++)
-            {
-                MotionClip clip = _clips[c];
-                int j = clip.Skeleton.JointCount;
-                double[] pose = _rotations[c];
-                Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
-                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose);
-            }
-        }
+        public void PlaybackFrame() => PlayFrame(planned: false, default, 0);
 
         /// <summary>
         /// <see cref="PlaybackFrame"/> with the model's predicted contacts deciding touch-down and lift-off (issue 29: every
         /// foot joint predicted planted, so both legs are solved on every frame, as in <see cref="PlaybackFrame"/>).
         /// </summary>
         [Benchmark]
-        public void PlaybackFramePredicted()
-        {
-            _frame = _frame % (Frames - 2) + 1;
-            if (_frame == 1) BeginTransitions();
-            for (int c = 0; c < _live.Length; c++)
-            {
-                MotionClip clip = _clips[c];
-                int j = clip.Skeleton.JointCount;
-                double[] pose = _rotations[c];
-                Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
-                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose, _planted, 0.5);
-            }
-        }
+        public void PlaybackFramePredicted() => PlayFrame(planned: false, _planted, 0.5);
 
         /// <summary>
         /// <see cref="PlaybackFrame"/> with each transition's span planned as a bake plans it (<see cref="LiveFootLocker.PlanSpan"/>,
         /// as the component does once the network's frames are decoded): the planning, once per transition, included.
         /// </summary>
         [Benchmark]
-        public void PlaybackFramePlanned()
+        public void PlaybackFramePlanned() => PlayFrame(planned: true, default, 0);
+
+        // One rendered frame of every character (the clip's own pose copied in, then locked as it is shown); the
+        // transitions begin again, pose by pose or planned, when the clip wraps. No contacts (default): labelled as it is shown.
+        private void PlayFrame(bool planned, ReadOnlySpan<float> contacts, double threshold)
         {
             _frame = _frame % (Frames - 2) + 1;
-            if (_frame == 1) BeginTransitions(planned: true);
+            if (_frame == 1) BeginTransitions(planned);
             for (int c = 0; c < _live.Length; c++)
             {
                 MotionClip clip = _clips[c];
                 int j = clip.Skeleton.JointCount;
                 double[] pose = _rotations[c];
                 Array.Copy(clip.LocalRotations, _frame * j * 4, pose, 0, pose.Length);
-                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose);
+                _live[c].LockPose(_frame / 30.0, clip.LocalPositions.AsSpan(_frame * j * 3, 3), pose, contacts, threshold);
             }
         }
 

@@ -150,15 +150,7 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
             Assert.That(cache.Computed, Is.EqualTo(1));
 
             // And the travel leaves the pose as it is and moves nothing.
-            int bones = Rig.Skeleton.JointCount;
-            double[] root = new double[3], rotations = new double[4 * bones];
-            frames.Sample(0.4, root, rotations);
-            double[] rootBefore = (double[])root.Clone(), rotationsBefore = (double[])rotations.Clone();
-            travel.InPlace(Rig, 0.4, root, rotations.AsSpan(0, 4));
-            Assert.That(root, Is.EqualTo(rootBefore));
-            Assert.That(rotations, Is.EqualTo(rotationsBefore));
-            travel.Velocity(0.4, blend.Duration, out double x, out double z, out double yawRate);
-            Assert.That((x, z, yawRate), Is.EqualTo((0.0, 0.0, 0.0)));
+            AssertTravelMovesNothing(travel, frames, 0.4, blend.Duration);
         }
 
         [Test]

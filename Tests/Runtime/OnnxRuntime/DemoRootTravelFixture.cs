@@ -49,6 +49,22 @@ namespace DeltaInterpolator.Tests.OnnxRuntime
         protected static double Distance(RootPlacement a, RootPlacement b) =>
             Math.Max(Math.Max(Math.Abs(a.X - b.X), Math.Abs(a.Z - b.Z)), Math.Abs(Math.IEEERemainder(a.Yaw - b.Yaw, 2 * Math.PI)));
 
+        /// <summary>
+        /// Asserts that a span without root travel leaves the pose sampled at <paramref name="fraction"/> as it is and moves
+        /// nothing (no velocity, no turn).
+        /// </summary>
+        protected void AssertTravelMovesNothing(SpanRootTravel travel, BlendFrames frames, double fraction, double seconds)
+        {
+            double[] root = new double[3], rotations = new double[4 * Rig.Skeleton.JointCount];
+            frames.Sample(fraction, root, rotations);
+            double[] rootBefore = (double[])root.Clone(), rotationsBefore = (double[])rotations.Clone();
+            travel.InPlace(Rig, fraction, root, rotations.AsSpan(0, 4));
+            Assert.That(root, Is.EqualTo(rootBefore));
+            Assert.That(rotations, Is.EqualTo(rotationsBefore));
+            travel.Velocity(fraction, seconds, out double x, out double z, out double yawRate);
+            Assert.That((x, z, yawRate), Is.EqualTo((0.0, 0.0, 0.0)));
+        }
+
         /// <summary>The travel's step from model frame <paramref name="k"/> to the next.</summary>
         protected static RootPlacement Step(SpanRootTravel travel, int k) => travel.Frame(k).StepTo(travel.Frame(k + 1));
     }
