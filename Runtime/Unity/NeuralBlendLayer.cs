@@ -205,7 +205,7 @@ namespace DeltaInterpolator.Unity
             TrackMoment moment = _layout.Locate(time);
             BlendFrames? frames = moment.Kind == TrackMomentKind.Span ? _blends[moment.Span] : null;
             _root[0] = default;
-            if (_path != null) Place(time);
+            if (_path != null) Place(moment, time);
             if (frames == null || !frames.Sample(moment.Fraction, _sample.AsSpan(0, 3), _sample.AsSpan(3)))
             {
                 _buffers.Weight[0] = 0;
@@ -234,20 +234,21 @@ namespace DeltaInterpolator.Unity
         /// to move it there in this frame whatever happened before (<see cref="RootVelocity"/>, with the frame's delta time);
         /// outside Play mode the character is put there at once.
         /// </summary>
-        private void Place(double time)
+        private void Place(TrackMoment moment, double time)
         {
             Transform character = _animator.transform;
             Vector3 p = character.localPosition;
             Quaternion q = character.localRotation;
-            var current = RootPlacement.OfTransform(p.x, p.z, new QuaternionD(q.w, q.x, q.y, q.z));
-            RootPlacement target = _path!.At(time);
+            var rotation = new QuaternionD(q.w, q.x, q.y, q.z);
+            var current = RootPlacement.OfTransform(p.x, p.z, rotation);
+            RootPlacement target = _path!.At(moment, time);
             if (!current.IsFinite) return;
             if (!Application.isPlaying)
             {
                 // An Editor preview may evaluate with no delta time (a paused scrub), and Timeline previews an Animation Track in
                 // absolute motion: put the character there directly, its height, pitch and roll kept (the track registers the
                 // transform with the preview, which gives it back when the preview ends), and leave the job nothing to move.
-                QuaternionD turned = RootPlacement.TurnedTo(new QuaternionD(q.w, q.x, q.y, q.z), target.Yaw);
+                QuaternionD turned = RootPlacement.TurnedTo(rotation, target.Yaw);
                 character.localPosition = new Vector3((float)target.X, p.y, (float)target.Z);
                 character.localRotation = new Quaternion((float)turned.X, (float)turned.Y, (float)turned.Z, (float)turned.W);
                 current = target;

@@ -23,7 +23,7 @@ namespace DeltaInterpolator.Core.Blends
     /// <item>Before the first clip and after the last: the clip by its extrapolation (<see cref="TrackLayout.Locate"/>);
     /// with none, held at that clip's edge.</item>
     /// </list>
-    /// Made when the track's graph is built (<see cref="Travel"/> once per span after its bake); <see cref="At"/> allocates nothing.
+    /// Made when the track's graph is built (<see cref="Travel"/> once per span after its bake); <see cref="At(double)"/> allocates nothing.
     /// </remarks>
     public sealed class TrackRootPath
     {
@@ -91,7 +91,16 @@ namespace DeltaInterpolator.Core.Blends
         public RootPlacement At(double time)
         {
             if (double.IsNaN(time)) throw new ArgumentOutOfRangeException(nameof(time), time, "expected a track time");
-            TrackMoment moment = _layout.Locate(time);
+            return At(_layout.Locate(time), time);
+        }
+
+        /// <summary>
+        /// Where the character stands at track time <paramref name="time"/>, which the layout the path was made on has
+        /// already located (<paramref name="moment"/>, <see cref="TrackLayout.Locate"/>): for a caller that locates the
+        /// playhead once a frame for the pose as well.
+        /// </summary>
+        public RootPlacement At(TrackMoment moment, double time)
+        {
             switch (moment.Kind)
             {
                 case TrackMomentKind.Clip:
