@@ -80,7 +80,7 @@ namespace DeltaInterpolator.Core.Blends
                 clip.Sample(k == intervals ? animationLength : animationLength * k / intervals, root, rotations);
                 RootPlacement at = RootPlacement.OfPose(rig, root, rotations.AsSpan(0, 4));
                 // Unwrapped: the facing turns continuously between samples.
-                samples[k] = k == 0 ? at : new RootPlacement(at.X, at.Z, samples[k - 1].Yaw + Math.IEEERemainder(at.Yaw - samples[k - 1].Yaw, 2 * Math.PI));
+                samples[k] = k == 0 ? at : new RootPlacement(at.X, at.Z, samples[k - 1].Yaw + RootPlacement.WrapYaw(at.Yaw - samples[k - 1].Yaw));
             }
 
             RootPlacement first = samples[0];

@@ -20,6 +20,9 @@ namespace DeltaInterpolator.Core.Blends
             Yaw = yaw;
         }
 
+        /// <summary>An angle in radians brought into −π..π (the same facing): the one rule for comparing and unwrapping yaws.</summary>
+        public static double WrapYaw(double angle) => Math.IEEERemainder(angle, 2 * Math.PI);
+
         /// <summary>Whether the position and yaw are all finite numbers.</summary>
         public bool IsFinite => double.IsFinite(X) && double.IsFinite(Z) && double.IsFinite(Yaw);
 

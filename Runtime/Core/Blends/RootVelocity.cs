@@ -32,7 +32,7 @@ namespace DeltaInterpolator.Core.Blends
             RootPlacement step = current.StepTo(target);
             double turn = step.Yaw;
             // Facings are angles: a target a whole turn (or more) away is the same facing, reached the shorter way.
-            if (turn > Math.PI || turn < -Math.PI) turn = Math.IEEERemainder(turn, 2 * Math.PI);
+            if (turn > Math.PI || turn < -Math.PI) turn = RootPlacement.WrapYaw(turn);
             x = step.X / seconds;
             z = step.Z / seconds;
             yawRate = turn / seconds;

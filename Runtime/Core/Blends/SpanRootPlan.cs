@@ -99,7 +99,7 @@ namespace DeltaInterpolator.Core.Blends
                     double w = blendIn != null ? blendIn(u) : u * u * (3 - 2 * u);
                     if (!(w >= 0 && w <= 1)) throw new ArgumentOutOfRangeException(nameof(blendIn), w, $"a mix-in weight at {u:0.###} of the blend; expected 0 to 1");
                     target = target.Then(new RootPlacement((1 - w) * a.X + w * b.X, (1 - w) * a.Z + w * b.Z,
-                        (1 - w) * Math.IEEERemainder(a.Yaw, 2 * Math.PI) + w * Math.IEEERemainder(b.Yaw, 2 * Math.PI)));
+                        (1 - w) * RootPlacement.WrapYaw(a.Yaw) + w * RootPlacement.WrapYaw(b.Yaw)));
                 }
             }
 

@@ -66,7 +66,7 @@ namespace DeltaInterpolator.Core.Blends
             RootPlacement[] frames = Unwrapped(trajectory);
             int last = frames.Length - 1;
             RootPlacement end = frames[last];
-            arrival = new RootPlacement(arrival.X, arrival.Z, end.Yaw + Wrap(arrival.Yaw - end.Yaw));
+            arrival = new RootPlacement(arrival.X, arrival.Z, end.Yaw + RootPlacement.WrapYaw(arrival.Yaw - end.Yaw));
             // What the correction must add at the second frame, the last and the one before it.
             RootPlacement second = frames[0].Then(lastStep), beforeLast = arrival.Then(firstStep.Inverse());
             double h = 1.0 / last;
@@ -173,12 +173,10 @@ namespace DeltaInterpolator.Core.Blends
             var frames = trajectory.ToArray();
             for (int k = 1; k < frames.Length; k++)
             {
-                frames[k] = new RootPlacement(frames[k].X, frames[k].Z, frames[k - 1].Yaw + Wrap(frames[k].Yaw - frames[k - 1].Yaw));
+                frames[k] = new RootPlacement(frames[k].X, frames[k].Z, frames[k - 1].Yaw + RootPlacement.WrapYaw(frames[k].Yaw - frames[k - 1].Yaw));
             }
 
             return frames;
         }
-
-        private static double Wrap(double angle) => angle - 2 * Math.PI * Math.Round(angle / (2 * Math.PI));
     }
 }

@@ -126,7 +126,7 @@ namespace DeltaInterpolator.Core.Blends
                 RootPlacement a = Clip(s.From, s.FromClip.PlayedTime(time, TrackExtrapolation.None)), b = Clip(s.To, s.ToClip.PlayedTime(time, TrackExtrapolation.None));
                 Func<double, double>? blendIn = _blendIn[span];
                 double w = blendIn != null ? blendIn(fraction) : fraction * fraction * (3 - 2 * fraction);
-                return new RootPlacement(a.X + w * (b.X - a.X), a.Z + w * (b.Z - a.Z), a.Yaw + w * Math.IEEERemainder(b.Yaw - a.Yaw, 2 * Math.PI));
+                return new RootPlacement(a.X + w * (b.X - a.X), a.Z + w * (b.Z - a.Z), a.Yaw + w * RootPlacement.WrapYaw(b.Yaw - a.Yaw));
             }
 
             if (s.FromClip.PostExtrapolation != TrackExtrapolation.None) return Clip(s.From, s.FromClip.PlayedTime(time, s.FromClip.PostExtrapolation));

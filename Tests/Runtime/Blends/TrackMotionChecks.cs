@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using DeltaInterpolator.Core.Blends;
 
 namespace DeltaInterpolator.Tests.Blends
 {
@@ -166,7 +167,7 @@ namespace DeltaInterpolator.Tests.Blends
                 (double side, double turn, double ahead) mine = Moved(frames, r, i, Character), theirs = Moved(frames, r, i, twin);
                 double off = Math.Sqrt((mine.side - theirs.side) * (mine.side - theirs.side) + (mine.ahead - theirs.ahead) * (mine.ahead - theirs.ahead));
                 double distance = Math.Sqrt(theirs.side * theirs.side + theirs.ahead * theirs.ahead);
-                double turned = Math.Abs(Wrap(mine.turn - theirs.turn)) * 180.0 / Math.PI;
+                double turned = Math.Abs(RootPlacement.WrapYaw(mine.turn - theirs.turn)) * 180.0 / Math.PI;
                 worst = Math.Max(worst, off);
                 worstTurn = Math.Max(worstTurn, turned);
                 compared++;
@@ -210,7 +211,7 @@ namespace DeltaInterpolator.Tests.Blends
         {
             FigurePlace a = frames[r].Figures[figure], b = frames[i].Figures[figure];
             double dx = b.X - a.X, dz = b.Z - a.Z, cos = Math.Cos(a.Yaw), sin = Math.Sin(a.Yaw);
-            return (cos * dx - sin * dz, Wrap(b.Yaw - a.Yaw), sin * dx + cos * dz);
+            return (cos * dx - sin * dz, RootPlacement.WrapYaw(b.Yaw - a.Yaw), sin * dx + cos * dz);
         }
 
         // A failure says what was measured and the bound: the message names both sides of the comparison.
@@ -219,12 +220,6 @@ namespace DeltaInterpolator.Tests.Blends
             if (!holds) failures.Add(what);
         }
 
-        private static double Wrap(double angle)
-        {
-            while (angle > Math.PI) angle -= 2 * Math.PI;
-            while (angle <= -Math.PI) angle += 2 * Math.PI;
-            return angle;
-        }
 
         private static double Max(List<double> values)
         {

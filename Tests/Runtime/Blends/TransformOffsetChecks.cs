@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using DeltaInterpolator.Core.Blends;
 
 namespace DeltaInterpolator.Tests.Blends
 {
@@ -59,7 +60,7 @@ namespace DeltaInterpolator.Tests.Blends
                 FigurePlace at = frames[i].Figures[0];
                 double since = frames[i].Time - clipStart;
                 double off = Math.Sqrt((at.X - expected.X) * (at.X - expected.X) + (at.Z - expected.Z) * (at.Z - expected.Z));
-                double turned = Math.Abs(Wrap(at.Yaw - expected.Yaw)) * 180 / Math.PI;
+                double turned = Math.Abs(RootPlacement.WrapYaw(at.Yaw - expected.Yaw)) * 180 / Math.PI;
                 double bound = fastest * since + Slack, turnBound = Degrees + 90 * since;
                 log.WriteLine($"(e) {what}: at {frames[i].Time:F3} s the character stands {off:F4} m and {turned:F2}° from the track's and clip's offsets (bounds {bound:F4} m, {turnBound:F2}°)");
                 if (off > bound) failures.Add($"(e) {what}: at {frames[i].Time:F3} s the character stands {off:F4} m from where the offsets place it ({expected.X:F3}, {expected.Z:F3}); expected at most {bound:F4} (is the track placing it?)");
@@ -97,9 +98,9 @@ namespace DeltaInterpolator.Tests.Blends
                     if (!(frames[k - 1].Time <= t && frames[k].Time >= t)) continue;
                     FigurePlace a = frames[k - 1].Figures[0], b = frames[k].Figures[0], now = frames[i].Figures[0];
                     double span = frames[k].Time - frames[k - 1].Time, u = span > 0 ? (t - frames[k - 1].Time) / span : 0;
-                    double x = a.X + u * (b.X - a.X), z = a.Z + u * (b.Z - a.Z), yaw = a.Yaw + u * Wrap(b.Yaw - a.Yaw);
+                    double x = a.X + u * (b.X - a.X), z = a.Z + u * (b.Z - a.Z), yaw = a.Yaw + u * RootPlacement.WrapYaw(b.Yaw - a.Yaw);
                     double apart = Math.Sqrt((b.X - a.X) * (b.X - a.X) + (b.Z - a.Z) * (b.Z - a.Z));
-                    double off = Math.Sqrt((now.X - x) * (now.X - x) + (now.Z - z) * (now.Z - z)), turned = Math.Abs(Wrap(now.Yaw - yaw)) * 180 / Math.PI;
+                    double off = Math.Sqrt((now.X - x) * (now.X - x) + (now.Z - z) * (now.Z - z)), turned = Math.Abs(RootPlacement.WrapYaw(now.Yaw - yaw)) * 180 / Math.PI;
                     worst = Math.Max(worst, off);
                     worstTurn = Math.Max(worstTurn, turned);
                     compared++;
@@ -111,13 +112,6 @@ namespace DeltaInterpolator.Tests.Blends
 
             if (compared == 0) failures.Add("(f) no frame after the jump back was compared (none between the jump's landing and the first Walk's end)");
             log.WriteLine($"(f) after the jump back: {compared} frames, at most {worst:F4} m and {worstTurn:F2}° from where the character stood at the same times before");
-        }
-
-        private static double Wrap(double angle)
-        {
-            while (angle > Math.PI) angle -= 2 * Math.PI;
-            while (angle <= -Math.PI) angle += 2 * Math.PI;
-            return angle;
         }
     }
 }
