@@ -3,16 +3,12 @@
 using System;
 using System.Collections;
 using System.Collections.Generic;
-using System.IO;
 using DeltaInterpolator.Core.Playback;
-using DeltaInterpolator.Editor.Models;
 using DeltaInterpolator.Unity;
 using NUnit.Framework;
-using UnityEditor;
 using UnityEditor.Animations;
 using UnityEngine;
 using UnityEngine.TestTools;
-using Object = UnityEngine.Object;
 
 namespace DeltaInterpolator.Tests.PlayMode
 {
@@ -31,7 +27,6 @@ namespace DeltaInterpolator.Tests.PlayMode
     /// </remarks>
     public sealed class HumanoidRootMotionVerification
     {
-        private const string Package = "com.deltainterpolator.inbetweening";
         private const string BvhFile = "cmu_09_12_walk_navigate.bvh";
         private const float WalkBeforeRequest = 1.0f;    // seconds of the controller's own walk (evidence for the frame check)
         private const float TargetClipTime = 3.0f;       // the frame of the clip the transition goes to
@@ -197,12 +192,12 @@ namespace DeltaInterpolator.Tests.PlayMode
         }
 
         /// <summary>The imported figure, its clip and avatar, Demo-like settings and a controller, in a temporary folder.</summary>
-        private sealed class Rig : IDisposable
+        private sealed class Rig : DemoFigureImport
         {
-            private readonly List<Object> _created = new List<Object>();
-            private string _folder = "";
-            private GameObject _figure = null!;
-            private Avatar _avatar = null!;
+            private Rig()
+                : base("DeltaInterpolator Verification")
+            {
+            }
 
             public AnimationClip Clip { get; private set; } = null!;
 
@@ -214,60 +209,24 @@ namespace DeltaInterpolator.Tests.PlayMode
             public static Rig Import()
             {
                 var rig = new Rig();
-                rig._folder = AssetDatabase.GUIDToAssetPath(AssetDatabase.CreateFolder("Assets", "DeltaInterpolator Verification"));
-                string bvh = rig._folder + "/" + BvhFile;
-                File.Copy(Path.GetFullPath("Packages/" + Package + "/Samples~/Demo/" + BvhFile), Path.GetFullPath(bvh));
-                AssetDatabase.ImportAsset(bvh);
-                GameObject figure = AssetDatabase.LoadAssetAtPath<GameObject>(bvh);
-                Assert.That(figure != null, Is.True, bvh + " is imported as a figure by the package's BVH importer");
-                rig._figure = figure!;
-                foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(bvh))
-                {
-                    if (o is AnimationClip c) rig.Clip = c;
-                    if (o is Avatar a) rig._avatar = a;
-                }
-
-                Assert.That(rig.Clip != null && rig._avatar != null && rig._avatar.isHuman, Is.True, "the CMU figure imports as a humanoid with a clip");
-                rig.Settings = DemoSettings(rig._folder, rig.Clip!);
-                rig._created.Add(rig.Settings);
-                rig.Controller = AnimatorController.CreateAnimatorControllerAtPathWithClip(rig._folder + "/Controller.controller", rig.Clip);
+                Dictionary<string, AnimationClip> clips = rig.ImportBvh(BvhFile, out GameObject figure, out Avatar avatar);
+                rig.FigureAsset = figure;
+                rig.FigureAvatar = avatar;
+                foreach (AnimationClip c in clips.Values) rig.Clip = c; // uncut: the one clip of the whole take
+                Assert.That(rig.Clip != null && avatar != null && avatar.isHuman, Is.True, "the CMU figure imports as a humanoid with a clip");
+                // The settings the Demo uses: Humanoid, the clip's first frame (a T-pose) as reference.
+                rig.Settings = rig.DemoSettings(CharacterRigKind.Humanoid, rig.Clip!);
+                rig.Controller = AnimatorController.CreateAnimatorControllerAtPathWithClip(rig.Folder + "/Controller.controller", rig.Clip);
                 return rig;
             }
 
             /// <summary>An instance of the figure turned 90° from the world's +Z, on <paramref name="controller"/> (none: still).</summary>
             public GameObject Figure(RuntimeAnimatorController? controller, bool visible, bool rootMotion)
             {
-                GameObject go = Object.Instantiate(_figure);
-                _created.Add(go);
-                go.transform.rotation = Quaternion.Euler(0f, 90f, 0f);
-                Animator animator = go.GetComponent<Animator>();
-                if (animator == null) animator = go.AddComponent<Animator>();
-                animator.avatar = _avatar;
-                animator.runtimeAnimatorController = controller;
-                animator.applyRootMotion = rootMotion;
+                // At the origin, where the importer builds the figure's root.
+                GameObject go = Figure(new Vector3(0f, 0f, 0f), 90f, controller, rootMotion);
                 if (!visible) foreach (Renderer r in go.transform.GetComponentsInChildren<Renderer>(true)) r.enabled = false;
                 return go;
-            }
-
-            public void Dispose()
-            {
-                foreach (Object o in _created) if (o != null) Object.DestroyImmediate(o);
-                if (_folder.Length > 0) AssetDatabase.DeleteAsset(_folder);
-            }
-
-            // The settings the Demo uses: the shipped model, Humanoid, CMU joint names, the clip's first frame (a T-pose) as reference.
-            private static InbetweenerSettings DemoSettings(string folder, AnimationClip clip)
-            {
-                var settings = ScriptableObject.CreateInstance<InbetweenerSettings>();
-                var s = new SerializedObject(settings);
-                s.FindProperty("model").objectReferenceValue = ShippedModelAssets.Create(folder + "/Model.asset");
-                s.FindProperty("rig").enumValueIndex = (int)CharacterRigKind.Humanoid;
-                s.FindProperty("jointMap").enumValueIndex = (int)BuiltInJointMap.Cmu;
-                s.FindProperty("referencePose").enumValueIndex = (int)ReferencePoseSource.ClipFrame;
-                s.FindProperty("referenceClip").objectReferenceValue = clip;
-                s.FindProperty("referenceClipTime").floatValue = 0f;
-                s.ApplyModifiedPropertiesWithoutUndo();
-                return settings;
             }
         }
 

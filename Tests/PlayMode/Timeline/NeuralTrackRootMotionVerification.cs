@@ -3,9 +3,7 @@
 using System;
 using System.Collections;
 using System.Collections.Generic;
-using System.IO;
 using DeltaInterpolator.Editor.Importers;
-using DeltaInterpolator.Editor.Models;
 using DeltaInterpolator.Tests.Blends;
 using DeltaInterpolator.Timeline;
 using static DeltaInterpolator.Tests.Blends.TrackMotionChecks;
@@ -43,7 +41,6 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
     /// </remarks>
     public sealed class NeuralTrackRootMotionVerification
     {
-        private const string Package = "com.deltainterpolator.inbetweening";
         private const string WalkFile = "cmu_09_12_walk_navigate.bvh"; // frame 0 is a T-pose: the reference pose
         private const string JumpsFile = "cmu_01_01_jumps_turn.bvh";
         private const string RootBone = "Hips";                         // the CMU skeleton's root joint
@@ -209,13 +206,14 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
         }
 
         /// <summary>The imported figure, its avatar and clips, the settings and everything made, in a temporary folder.</summary>
-        private sealed class Rig : IDisposable
+        private sealed class Rig : DemoFigureImport
         {
-            private readonly List<Object> _created = new List<Object>();
-            private string _folder = "";
-            private GameObject _figure = null!;
-            private Avatar _avatar = null!;
             private InbetweenerSettings _settings = null!;
+
+            private Rig()
+                : base("DeltaInterpolator Track Verification")
+            {
+            }
 
             public AnimationClip Walk { get; private set; } = null!;
 
@@ -229,15 +227,14 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
             public static Rig Import(bool humanoid)
             {
                 var rig = new Rig();
-                rig._folder = AssetDatabase.GUIDToAssetPath(AssetDatabase.CreateFolder("Assets", "DeltaInterpolator Track Verification"));
                 Dictionary<string, AnimationClip> walk = rig.ImportBvh(WalkFile, out GameObject figure, out Avatar avatar, Cut("Walk", 172, 304, true), Cut("TPose", 0, 1, false));
                 Dictionary<string, AnimationClip> jumps = rig.ImportBvh(JumpsFile, out _, out _, Cut("Jump", 156, 348, false));
                 Assert.That(avatar.isHuman, Is.True, "the CMU figure imports as a humanoid");
-                rig._figure = figure;
+                rig.FigureAsset = figure;
                 AnimationClip tPose = walk["TPose"];
                 if (humanoid)
                 {
-                    rig._avatar = avatar;
+                    rig.FigureAvatar = avatar;
                     rig.Walk = walk["Walk"];
                     rig.Jump = jumps["Jump"];
                 }
@@ -245,31 +242,21 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
                 {
                     // The avatar built from the figure in its rest pose, with the hips as its root motion node.
                     GameObject rest = Object.Instantiate(figure);
-                    rig._avatar = AvatarBuilder.BuildGenericAvatar(rest, RootBone);
+                    rig.FigureAvatar = AvatarBuilder.BuildGenericAvatar(rest, RootBone);
                     Object.DestroyImmediate(rest);
-                    rig.Keep(rig._avatar);
-                    Assert.That(rig._avatar.isValid && !rig._avatar.isHuman, Is.True, "a generic avatar is built from the figure");
+                    rig.Keep(rig.FigureAvatar);
+                    Assert.That(rig.FigureAvatar.isValid && !rig.FigureAvatar.isHuman, Is.True, "a generic avatar is built from the figure");
                     rig.Walk = rig.Keep(TransformCurves(walk["Walk"]));
                     rig.Jump = rig.Keep(TransformCurves(jumps["Jump"]));
                     tPose = rig.Keep(TransformCurves(tPose));
                 }
 
-                rig._settings = rig.Keep(Settings(rig._folder, humanoid, tPose));
+                rig._settings = rig.DemoSettings(humanoid ? CharacterRigKind.Humanoid : CharacterRigKind.Generic, tPose);
                 return rig;
             }
 
             /// <summary>An instance of the figure at <paramref name="position"/>, turned <paramref name="yaw"/>° about +Y, its Animator applying root motion.</summary>
-            public GameObject Figure(Vector3 position, float yaw)
-            {
-                GameObject go = Keep(Object.Instantiate(_figure));
-                go.transform.SetPositionAndRotation(position, Quaternion.Euler(0f, yaw, 0f));
-                Animator animator = go.GetComponent<Animator>();
-                if (animator == null) animator = go.AddComponent<Animator>();
-                animator.avatar = _avatar;
-                animator.runtimeAnimatorController = null!;
-                animator.applyRootMotion = true;
-                return go;
-            }
+            public GameObject Figure(Vector3 position, float yaw) => Figure(position, yaw, null, applyRootMotion: true);
 
             public Transform Hips(GameObject figure)
             {
@@ -300,45 +287,6 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
                 return placed;
             }
 
-            public T Keep<T>(T made) where T : Object
-            {
-                _created.Add(made);
-                return made;
-            }
-
-            public void Dispose()
-            {
-                foreach (Object o in _created) if (o != null) Object.DestroyImmediate(o);
-                if (_folder.Length > 0) AssetDatabase.DeleteAsset(_folder);
-            }
-
-            private Dictionary<string, AnimationClip> ImportBvh(string file, out GameObject figure, out Avatar avatar, params BvhClipSettings[] cuts)
-            {
-                string path = _folder + "/" + file;
-                File.Copy(Path.GetFullPath("Packages/" + Package + "/Samples~/Demo/" + file), Path.GetFullPath(path));
-                AssetDatabase.ImportAsset(path);
-                var importer = AssetImporter.GetAtPath(path) as BvhImporter;
-                Assert.That(importer != null, Is.True, path + " is imported by the package's BVH importer");
-                // A script's change to an importer's field is saved to the .meta and imported only once the importer is marked dirty.
-                importer!.clips = cuts;
-                EditorUtility.SetDirty(importer);
-                importer.SaveAndReimport();
-                GameObject? found = AssetDatabase.LoadAssetAtPath<GameObject>(path);
-                Assert.That(found != null, Is.True, path + " is imported as a figure");
-                figure = found!;
-                avatar = null!;
-                var clips = new Dictionary<string, AnimationClip>();
-                foreach (Object o in AssetDatabase.LoadAllAssetsAtPath(path))
-                {
-                    if (o is AnimationClip c) clips[c.name] = c;
-                    if (o is Avatar a) avatar = a;
-                }
-
-                foreach (BvhClipSettings cut in cuts) Assert.That(clips.ContainsKey(cut.name), Is.True, $"{path} has the clip {cut.name}");
-                Assert.That(avatar != null, Is.True, path + " has an avatar");
-                return clips;
-            }
-
             private static BvhClipSettings Cut(string name, int first, int last, bool loop) => new BvhClipSettings { name = name, firstFrame = first, lastFrame = last, loop = loop };
 
             // A generic clip: the imported clip's transform curves (the joints' own), without the humanoid body and muscle curves.
@@ -352,21 +300,6 @@ namespace DeltaInterpolator.Tests.PlayMode.Timeline
 
                 AnimationUtility.SetAnimationClipSettings(clip, AnimationUtility.GetAnimationClipSettings(source));
                 return clip;
-            }
-
-            // The Demo's settings: the shipped model, the rig kind, CMU joint names, the walk's T-pose frame as reference.
-            private static InbetweenerSettings Settings(string folder, bool humanoid, AnimationClip tPose)
-            {
-                var settings = ScriptableObject.CreateInstance<InbetweenerSettings>();
-                var s = new SerializedObject(settings);
-                s.FindProperty("model").objectReferenceValue = ShippedModelAssets.Create(folder + "/Model.asset");
-                s.FindProperty("rig").enumValueIndex = (int)(humanoid ? CharacterRigKind.Humanoid : CharacterRigKind.Generic);
-                s.FindProperty("jointMap").enumValueIndex = (int)BuiltInJointMap.Cmu;
-                s.FindProperty("referencePose").enumValueIndex = (int)ReferencePoseSource.ClipFrame;
-                s.FindProperty("referenceClip").objectReferenceValue = tPose;
-                s.FindProperty("referenceClipTime").floatValue = 0f;
-                s.ApplyModifiedPropertiesWithoutUndo();
-                return settings;
             }
         }
     }
